@@ -1,0 +1,1 @@
+#include "biphasic/mesh/mesh.hpp"
