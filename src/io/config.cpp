@@ -1,0 +1,1 @@
+#include "biphasic/io/config.hpp"
