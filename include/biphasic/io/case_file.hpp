@@ -1,0 +1,46 @@
+// Case files: TOML input describing one run, validated against a schema and resolved into a
+// Config (units: mm, N, s, MPa).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "biphasic/io/config.hpp"
+
+namespace biphasic {
+
+/// Every problem found in a case file, reported together.
+class CaseError : public std::runtime_error {
+ public:
+  /// what() is the problems joined by '\n'.
+  explicit CaseError(std::vector<std::string> problems);
+  const std::vector<std::string>& problems() const;
+
+ private:
+  std::vector<std::string> problems_;
+};
+
+/// Reads, validates and resolves a TOML case file; `overrides` are "key=value" strings from
+/// --set, applied before validation. Throws CaseError listing every problem; nothing partial.
+Config read_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// Same from text; `source_name` is used in messages in place of the file name and stored as
+/// Config::case_file; a relative mesh.file is resolved against `base_dir`.
+Config parse_case(const std::string& toml_text, const std::string& source_name,
+                  const std::vector<std::string>& overrides = {},
+                  const std::string& base_dir = ".");
+
+/// Markdown reference of every key (type, default, range/choices, unit, help), from the schema.
+std::string case_schema_markdown();
+
+/// The resolved configuration as JSON (stored in the run summary), with every key and value,
+/// laid out like the case file (plus "case_file").
+nlohmann::json config_to_json(const Config& config);
+
+/// Throws CaseError if a boundary condition or mesh.grading_faces names a boundary the mesh
+/// lacks; the message lists the mesh's boundary names.
+void check_boundaries(const Config& config, const std::vector<std::string>& mesh_boundary_names);
+
+}  // namespace biphasic

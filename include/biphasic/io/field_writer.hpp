@@ -1,0 +1,73 @@
+// Time-series output of the nodal fields to HDF5 with an XDMF index for ParaView/VisIt.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "biphasic/mesh/mesh.hpp"
+
+namespace biphasic {
+
+/// For every edge node of `mesh` (mesh index num_vertices + k, stored at position k) the two
+/// vertices of the edge it sits on, smaller index first. Built from the tetrahedra; throws
+/// std::runtime_error if a tetrahedron has a corner or edge slot outside its node range, if an
+/// edge node is shared by two different edges, or if an edge node belongs to no tetrahedron.
+std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh);
+
+/// The P1 pressure [MPa] given on the vertices evaluated at every P2 node: vertices keep their
+/// value, an edge node gets the mean of its edge's two vertices. `edges` comes from
+/// edge_node_vertices(); `p_vertices` must have one entry per vertex.
+std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& edges,
+                                      const std::vector<double>& p_vertices);
+
+/// Writes the displacement [mm] and pressure [MPa] of a run to `<directory>/<stem>.h5` and keeps
+/// `<directory>/<stem>.xdmf` (XDMF 3 temporal collection, Tetrahedron_10 cells) up to date.
+///
+/// HDF5 layout:
+///   /mesh/coordinates               N×3 double [mm]
+///   /mesh/topology                  E×10 int64 (Tetrahedron_10 node order)
+///   /mesh/vertex_count              scalar int64 (the first vertex_count nodes are corners)
+///   /fields/times                   extensible 1-D double [s], one entry per output
+///   /fields/displacement/<i>        N×3 double [mm]
+///   /fields/pressure/<i>            N double [MPa], P1 pressure evaluated on all P2 nodes
+///   /fields/pressure_vertices/<i>   num_vertices double [MPa]
+/// Every field dataset carries a `time` attribute [s].
+///
+/// After each write() the HDF5 file is flushed and the XDMF file is replaced atomically (written
+/// to a temporary and renamed), so a run killed between outputs leaves a readable pair. Paths
+/// inside the XDMF file are relative to its folder. Any existing files of the same name are
+/// replaced.
+class FieldWriter {
+ public:
+  /// Creates `directory` if needed and writes the mesh. Throws std::runtime_error on failure.
+  FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh);
+  ~FieldWriter();
+  FieldWriter(const FieldWriter&) = delete;
+  FieldWriter& operator=(const FieldWriter&) = delete;
+
+  /// Appends output number num_outputs() at time `t` [s]. `u` is node-major, size 3·num_nodes
+  /// (u[3n+c], mm); `p_vertices` has one pressure per vertex [MPa].
+  void write(double t, const std::vector<double>& u, const std::vector<double>& p_vertices);
+
+  std::size_t num_outputs() const { return times_.size(); }
+  const std::vector<double>& times() const { return times_; }  ///< output times [s]
+  const std::string& h5_path() const { return h5_path_; }
+  const std::string& xdmf_path() const { return xdmf_path_; }
+
+ private:
+  void write_xdmf() const;
+
+  std::string stem_;
+  std::string h5_path_;
+  std::string xdmf_path_;
+  std::int64_t file_ = -1;  ///< HDF5 file handle (hid_t)
+  Index num_nodes_ = 0;
+  Index num_vertices_ = 0;
+  Index num_tets_ = 0;
+  std::vector<std::array<Index, 2>> edges_;  ///< edge node → vertex pair
+  std::vector<double> times_;
+};
+
+}  // namespace biphasic

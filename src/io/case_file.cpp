@@ -1,0 +1,735 @@
+// Reading a case file: TOML parsing, --set overrides, validation against the schema in
+// case_schema.cpp, and resolution into a Config.
+#include "biphasic/io/case_file.hpp"
+
+#include <toml++/toml.h>
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "case_schema.hpp"
+
+namespace biphasic {
+
+namespace {
+
+using namespace case_schema;
+
+const std::string kSetSource = "--set";
+
+/// Collects problems as "<source>: <key> = <value>: <what>"; the source is "--set" for keys
+/// set by an override, the case file otherwise.
+class Problems {
+ public:
+  explicit Problems(std::string source) : source_(std::move(source)) {}
+
+  void mark_overridden(const std::string& key) { overridden_.insert(key); }
+  const std::string& source_of(const std::string& key) const {
+    return overridden_.count(key) > 0 ? kSetSource : source_;
+  }
+  const std::string& source() const { return source_; }
+
+  void bad_value(const std::string& key, const std::string& shown, const std::string& what) {
+    bad_.insert(key);
+    list_.push_back(source_of(key) + ": " + key + " = " + shown + ": " + what);
+  }
+  void bad_key(const std::string& key, const std::string& what) {
+    bad_.insert(key);
+    list_.push_back(source_of(key) + ": " + key + ": " + what);
+  }
+  void add(std::string message) { list_.push_back(std::move(message)); }
+
+  bool is_bad(const std::string& key) const { return bad_.count(key) > 0; }
+  bool empty() const { return list_.empty(); }
+  std::vector<std::string> take() { return std::move(list_); }
+
+ private:
+  std::string source_;
+  std::set<std::string> overridden_;
+  std::set<std::string> bad_;
+  std::vector<std::string> list_;
+};
+
+// ---- small helpers ------------------------------------------------------------------------
+
+std::string trim(const std::string& text) {
+  const char* space = " \t\r\n";
+  auto first = text.find_first_not_of(space);
+  if (first == std::string::npos) return "";
+  auto last = text.find_last_not_of(space);
+  return text.substr(first, last - first + 1);
+}
+
+std::string last_segment(const std::string& path) {
+  auto dot = path.rfind('.');
+  return dot == std::string::npos ? path : path.substr(dot + 1);
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// The candidate the user most likely meant by `unknown`, or "" if none is close: a key with
+/// the same last segment in another section, else the nearest by edit distance.
+std::string suggest(const std::string& unknown, const std::vector<std::string>& candidates) {
+  const std::string last = last_segment(unknown);
+  for (const auto& c : candidates) {
+    if (c != unknown && last_segment(c) == last) return c;
+  }
+  std::string best;
+  std::size_t best_distance = std::max<std::size_t>(2, last.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    if (c == unknown) continue;
+    const std::size_t d = edit_distance(unknown, c);
+    if (d < best_distance) {
+      best = c;
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+std::string unknown_key_message(const std::string& key, const std::string& suggestion) {
+  std::string out = "unknown key '" + key + "'";
+  if (!suggestion.empty()) out += " (did you mean '" + suggestion + "'?)";
+  return out;
+}
+
+/// A TOML node as compact TOML-like text, shortened if long.
+std::string show(const toml::node& node) {
+  std::string out;
+  if (const auto* s = node.as_string()) {
+    out = quote(s->get());
+  } else if (const auto* i = node.as_integer()) {
+    out = std::to_string(i->get());
+  } else if (const auto* f = node.as_floating_point()) {
+    out = format_number(f->get());
+  } else if (const auto* b = node.as_boolean()) {
+    out = b->get() ? "true" : "false";
+  } else if (const auto* a = node.as_array()) {
+    std::vector<std::string> items;
+    for (const auto& item : *a) items.push_back(show(item));
+    out = "[" + join(items, ", ") + "]";
+  } else if (const auto* t = node.as_table()) {
+    std::vector<std::string> items;
+    for (const auto& [k, v] : *t) items.push_back(std::string(k.str()) + " = " + show(v));
+    out = items.empty() ? "{}" : "{ " + join(items, ", ") + " }";
+  } else {
+    std::ostringstream stream;
+    if (const auto* d = node.as_date())
+      stream << *d;
+    else if (const auto* tm = node.as_time())
+      stream << *tm;
+    else if (const auto* dt = node.as_date_time())
+      stream << *dt;
+    out = stream.str();
+  }
+  constexpr std::size_t kMaxShown = 80;
+  if (out.size() > kMaxShown) out = out.substr(0, kMaxShown - 3) + "...";
+  return out;
+}
+
+std::optional<double> as_number(const toml::node& node) {
+  if (const auto* f = node.as_floating_point()) return f->get();
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  return std::nullopt;
+}
+
+std::string with_unit(const std::string& text, const KeyInfo& key) {
+  return key.unit.empty() ? text : text + " (" + key.unit + ")";
+}
+
+/// A value read from TOML, or why it is not acceptable.
+struct Read {
+  std::optional<Value> value;
+  std::string problem;
+};
+
+Read fail(std::string problem) { return Read{std::nullopt, std::move(problem)}; }
+
+Read read_integer(const toml::node& node, const KeyInfo& key) {
+  const auto* integer = node.as_integer();
+  if (integer == nullptr) return fail("expected an integer");
+  const std::int64_t v = integer->get();
+  if (!key.allowed.empty() &&
+      std::find(key.allowed.begin(), key.allowed.end(), v) == key.allowed.end()) {
+    if (key.allowed.size() == 1) return fail("must be " + std::to_string(key.allowed[0]));
+    std::vector<std::string> items;
+    for (auto a : key.allowed) items.push_back(std::to_string(a));
+    return fail("must be one of " + join(items, ", "));
+  }
+  if (!key.range.contains(static_cast<double>(v))) {
+    return fail(with_unit("must be " + key.range.describe(), key));
+  }
+  if (v > INT_MAX || v < INT_MIN)
+    return fail("is too large (limit " + std::to_string(INT_MAX) + ")");
+  return Read{Value{v}, {}};
+}
+
+Read read_number(const toml::node& node, const KeyInfo& key) {
+  const auto v = as_number(node);
+  if (!v) return fail("expected a number");
+  if (!std::isfinite(*v)) return fail("must be a finite number");
+  if (!key.range.contains(*v)) return fail(with_unit("must be " + key.range.describe(), key));
+  return Read{Value{*v}, {}};
+}
+
+Read read_vector(const toml::node& node, const KeyInfo& key) {
+  const auto* array = node.as_array();
+  if (array == nullptr || array->size() != 3) return fail("expected an array of 3 numbers");
+  std::array<double, 3> out{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto v = as_number((*array)[i]);
+    if (!v) return fail("expected an array of 3 numbers");
+    if (!std::isfinite(*v)) return fail("components must be finite numbers");
+    if (!key.range.contains(*v)) {
+      return fail(with_unit("components must be " + key.range.describe(), key));
+    }
+    out[i] = *v;
+  }
+  return Read{Value{out}, {}};
+}
+
+Read read_string_list(const toml::node& node, const KeyInfo& key) {
+  const auto* array = node.as_array();
+  if (array == nullptr) return fail("expected an array of strings");
+  std::vector<std::string> out;
+  for (const auto& item : *array) {
+    const auto* s = item.as_string();
+    if (s == nullptr) return fail("expected an array of strings");
+    const std::string& text = s->get();
+    if (!key.choices.empty() &&
+        std::find(key.choices.begin(), key.choices.end(), text) == key.choices.end()) {
+      return fail(quote(text) + " is not one of " + join(key.choices, ", "));
+    }
+    if (std::find(out.begin(), out.end(), text) != out.end()) {
+      return fail(quote(text) + " is listed twice");
+    }
+    out.push_back(text);
+  }
+  return Read{Value{out}, {}};
+}
+
+/// Reads `node` as the kind of value `key` holds and checks its range or choices.
+Read read_value(const toml::node& node, const KeyInfo& key) {
+  switch (key.kind) {
+    case Kind::Integer:
+      return read_integer(node, key);
+    case Kind::Number:
+      return read_number(node, key);
+    case Kind::Boolean: {
+      const auto* b = node.as_boolean();
+      if (b == nullptr) return fail("expected true or false");
+      return Read{Value{b->get()}, {}};
+    }
+    case Kind::String:
+    case Kind::Choice: {
+      const auto* s = node.as_string();
+      if (s == nullptr) return fail("expected a string");
+      const std::string& text = s->get();
+      if (key.non_empty && text.empty()) return fail("must not be empty");
+      if (key.kind == Kind::Choice &&
+          std::find(key.choices.begin(), key.choices.end(), text) == key.choices.end()) {
+        return fail("must be one of " + join(key.choices, ", "));
+      }
+      return Read{Value{text}, {}};
+    }
+    case Kind::Vector3:
+      return read_vector(node, key);
+    case Kind::StringList:
+      return read_string_list(node, key);
+    case Kind::Curve:
+      break;
+  }
+  return fail("cannot be read");
+}
+
+/// The node at dotted `path` below `root`, or nullptr if it or a parent table is absent.
+const toml::node* find_path(const toml::table& root, const std::string& path) {
+  const toml::table* table = &root;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = path.find('.', start);
+    const toml::node* node = table->get(path.substr(start, dot - start));
+    if (node == nullptr || dot == std::string::npos) return node;
+    table = node->as_table();
+    if (table == nullptr) return nullptr;
+    start = dot + 1;
+  }
+}
+
+// ---- what the schema knows --------------------------------------------------------------
+
+struct KnownPaths {
+  std::set<std::string> leaves;             ///< global keys that hold values
+  std::set<std::string> tables;             ///< sections (and subsections) of global keys
+  std::vector<std::string> candidates;      ///< everything a top-level key may be, for suggestions
+  std::vector<std::string> boundary_names;  ///< keys of a [[boundary]] entry
+};
+
+const KnownPaths& known_paths() {
+  static const KnownPaths known = [] {
+    KnownPaths k;
+    for (const auto& key : global_keys()) {
+      if (key.kind == Kind::Curve) continue;
+      k.leaves.insert(key.path);
+      for (auto dot = key.path.find('.'); dot != std::string::npos;
+           dot = key.path.find('.', dot + 1)) {
+        k.tables.insert(key.path.substr(0, dot));
+      }
+    }
+    k.candidates.assign(k.leaves.begin(), k.leaves.end());
+    k.candidates.insert(k.candidates.end(), k.tables.begin(), k.tables.end());
+    k.candidates.push_back("curves");
+    k.candidates.push_back("boundary");
+    for (const auto& key : boundary_keys()) k.boundary_names.push_back(key.path);
+    return k;
+  }();
+  return known;
+}
+
+std::vector<std::string> prefixed(const std::string& prefix,
+                                  const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const auto& n : names) out.push_back(prefix + n);
+  return out;
+}
+
+/// Reports keys the schema does not know, at every level of the global sections.
+void check_unknown_keys(const toml::table& table, const std::string& prefix, Problems& problems) {
+  const auto& known = known_paths();
+  for (const auto& [k, node] : table) {
+    const std::string path =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (known.leaves.count(path) > 0 || path == "curves" || path == "boundary") continue;
+    if (known.tables.count(path) > 0) {
+      if (const auto* sub = node.as_table()) {
+        check_unknown_keys(*sub, path, problems);
+      } else {
+        problems.bad_value(path, show(node), "expected a table ([" + path + "])");
+      }
+      continue;
+    }
+    problems.add(problems.source() + ": " +
+                 unknown_key_message(path, suggest(path, known.candidates)));
+  }
+}
+
+// ---- overrides ----------------------------------------------------------------------------
+
+/// Parses the text after '=' as a TOML value; text that is not TOML is taken as a string.
+toml::table override_value(const std::string& text) {
+  try {
+    toml::table parsed = toml::parse("v = " + text, kSetSource);
+    if (parsed.size() == 1 && parsed.contains("v")) return parsed;
+  } catch (const toml::parse_error&) {
+  }
+  toml::table bare;
+  bare.insert_or_assign("v", text);
+  return bare;
+}
+
+/// Applies one "key=value"; returns a problem, or "" when applied.
+std::string apply_override(toml::table& root, const std::string& argument, Problems& problems) {
+  const std::string where = kSetSource + " " + argument + ": ";
+  const auto eq = argument.find('=');
+  if (eq == std::string::npos) return where + "expected key=value";
+  const std::string key = trim(argument.substr(0, eq));
+  if (key.empty()) return where + "expected key=value (the key is empty)";
+  const toml::table parsed = override_value(trim(argument.substr(eq + 1)));
+  const toml::node& value = *parsed.get("v");
+  const auto& known = known_paths();
+
+  if (key.rfind("boundary[", 0) == 0) {
+    const auto close = key.find(']');
+    const std::string index_text =
+        close == std::string::npos ? std::string{} : key.substr(9, close - 9);
+    std::size_t index = 0;
+    const auto [end, error] =
+        std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+    if (index_text.empty() || error != std::errc{} ||
+        end != index_text.data() + index_text.size()) {
+      return where + "'" + key + "' needs boundary[i].key with i a number from 0";
+    }
+    const std::string name =
+        close + 1 < key.size() && key[close + 1] == '.' ? key.substr(close + 2) : std::string{};
+    const std::string entry = "boundary[" + std::to_string(index) + "]";
+    if (std::find(known.boundary_names.begin(), known.boundary_names.end(), name) ==
+        known.boundary_names.end()) {
+      const std::string full = entry + "." + name;
+      return where +
+             unknown_key_message(full, suggest(full, prefixed(entry + ".", known.boundary_names)));
+    }
+    auto* array = root["boundary"].as_array();
+    const std::size_t count = array == nullptr ? 0 : array->size();
+    if (index >= count) {
+      return where + "index " + std::to_string(index) + " is out of range (the case has " +
+             std::to_string(count) + " [[boundary]] entr" + (count == 1 ? "y)" : "ies)");
+    }
+    auto* table = (*array)[index].as_table();
+    if (table == nullptr) return where + entry + " is not a table";
+    table->insert_or_assign(name, value);
+    problems.mark_overridden(entry + "." + name);
+    return "";
+  }
+
+  std::vector<std::string> parts;
+  if (key.rfind("curves.", 0) == 0 && key.size() > 7) {
+    parts = {"curves", key.substr(7)};
+  } else if (known.leaves.count(key) > 0) {
+    std::size_t start = 0;
+    for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
+      parts.push_back(key.substr(start, dot - start));
+      start = dot + 1;
+    }
+    parts.push_back(key.substr(start));
+  } else if (known.tables.count(key) > 0 || key == "curves" || key == "boundary") {
+    return where + "'" + key + "' is a table; set the keys inside it instead (e.g. " +
+           (key == "curves"     ? std::string("curves.ramp")
+            : key == "boundary" ? std::string("boundary[0].value")
+                                : *known.leaves.lower_bound(key + ".")) +
+           ")";
+  } else {
+    std::vector<std::string> candidates = known.candidates;
+    candidates.push_back("curves.<name>");
+    return where + unknown_key_message(key, suggest(key, candidates));
+  }
+
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (next == nullptr) {
+      next = table->insert_or_assign(parts[i], toml::table{}).first->second.as_table();
+    }
+    table = next->as_table();
+    if (table == nullptr) return where + "'" + parts[i] + "' in the case file is not a table";
+  }
+  table->insert_or_assign(parts.back(), value);
+  problems.mark_overridden(key);
+  return "";
+}
+
+// ---- sections ------------------------------------------------------------------------------
+
+void read_global_keys(const toml::table& root, Config& config, Problems& problems) {
+  for (const auto& key : global_keys()) {
+    if (key.kind == Kind::Curve) continue;
+    const toml::node* node = find_path(root, key.path);
+    if (node == nullptr) {
+      if (key.required) problems.bad_key(key.path, "required key is missing");
+      continue;
+    }
+    const Read read = read_value(*node, key);
+    if (!read.value) {
+      problems.bad_value(key.path, show(*node), read.problem);
+    } else if (key.store) {
+      key.store(config, *read.value);
+    }
+  }
+}
+
+/// Reads [curves]; `names` receives every curve name given, valid or not.
+void read_curves(const toml::table& root, Config& config, std::set<std::string>& names,
+                 Problems& problems) {
+  const toml::node* node = root.get("curves");
+  if (node == nullptr) return;
+  const auto* table = node->as_table();
+  if (table == nullptr) {
+    problems.bad_value("curves", show(*node), "expected a table of named curves ([curves])");
+    return;
+  }
+  for (const auto& [k, value] : *table) {
+    const std::string name(k.str());
+    const std::string key = "curves." + name;
+    names.insert(name);
+    const auto* array = value.as_array();
+    if (array == nullptr) {
+      problems.bad_value(key, show(value), "expected an array of [t, value] points");
+      continue;
+    }
+    if (array->empty()) {
+      problems.bad_value(key, show(value), "needs at least one [t, value] point");
+      continue;
+    }
+    LoadCurve curve;
+    std::string problem;
+    for (const auto& item : *array) {
+      const auto* point = item.as_array();
+      std::optional<double> t;
+      std::optional<double> v;
+      if (point != nullptr && point->size() == 2) {
+        t = as_number((*point)[0]);
+        v = as_number((*point)[1]);
+      }
+      if (!t || !v) {
+        problem = "expected [t, value] pairs of numbers, got " + show(item);
+        break;
+      }
+      if (!std::isfinite(*t) || !std::isfinite(*v)) {
+        problem = "point " + show(item) + " is not finite";
+        break;
+      }
+      if (!curve.points.empty() && !(*t > curve.points.back().first)) {
+        problem = "times must be strictly increasing, but t = " + format_number(*t) +
+                  " follows t = " + format_number(curve.points.back().first);
+        break;
+      }
+      curve.points.emplace_back(*t, *v);
+    }
+    if (problem.empty()) {
+      config.curves[name] = std::move(curve);
+    } else {
+      problems.bad_value(key, show(value), problem);
+    }
+  }
+}
+
+std::optional<BcType> read_bc_type(const toml::table& entry) {
+  const toml::node* node = entry.get("type");
+  if (node == nullptr || node->as_string() == nullptr) return std::nullopt;
+  const auto& names = bc_type_names();
+  const auto it = std::find(names.begin(), names.end(), node->as_string()->get());
+  if (it == names.end()) return std::nullopt;
+  return static_cast<BcType>(it - names.begin());
+}
+
+void read_boundaries(const toml::table& root, const std::set<std::string>& curve_names,
+                     Config& config, Problems& problems) {
+  const toml::node* node = root.get("boundary");
+  if (node == nullptr) {
+    problems.bad_key("boundary", "at least one [[boundary]] entry is required");
+    return;
+  }
+  const auto* array = node->as_array();
+  if (array == nullptr) {
+    problems.bad_value("boundary", show(*node), "expected [[boundary]] tables");
+    return;
+  }
+  if (array->empty()) {
+    problems.bad_key("boundary", "at least one [[boundary]] entry is required");
+    return;
+  }
+  const auto& known = known_paths();
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string entry = "boundary[" + std::to_string(i) + "]";
+    const auto* table = (*array)[i].as_table();
+    if (table == nullptr) {
+      problems.bad_value(entry, show((*array)[i]), "expected a table");
+      continue;
+    }
+    for (const auto& [k, value] : *table) {
+      const std::string name(k.str());
+      if (std::find(known.boundary_names.begin(), known.boundary_names.end(), name) ==
+          known.boundary_names.end()) {
+        const std::string full = entry + "." + name;
+        problems.add(
+            problems.source_of(full) + ": " +
+            unknown_key_message(full, suggest(full, prefixed(entry + ".", known.boundary_names))));
+      }
+    }
+    const std::optional<BcType> type = read_bc_type(*table);
+    BoundaryCondition bc;
+    for (const auto& key : boundary_keys()) {
+      const std::string full = entry + "." + key.path;
+      const Need need =
+          key.per_type && type ? key.need[static_cast<std::size_t>(*type)] : Need::Optional;
+      const toml::node* value = table->get(key.path);
+      if (value == nullptr) {
+        if (key.required) {
+          problems.bad_key(full, "required key is missing");
+        } else if (need == Need::Required) {
+          problems.bad_key(full, "required for type " + quote(bc_type_name(*type)));
+        }
+        continue;
+      }
+      if (need == Need::Forbidden) {
+        problems.bad_value(full, show(*value),
+                           "not allowed for type " + quote(bc_type_name(*type)));
+        continue;
+      }
+      const Read read = read_value(*value, key);
+      if (!read.value) {
+        problems.bad_value(full, show(*value), read.problem);
+      } else {
+        key.store(bc, *read.value);
+      }
+    }
+    if (!bc.curve.empty() && curve_names.count(bc.curve) == 0) {
+      const std::vector<std::string> defined(curve_names.begin(), curve_names.end());
+      problems.bad_value(entry + ".curve", quote(bc.curve),
+                         defined.empty() ? "no such curve (no curves are defined)"
+                                         : "no such curve (defined: " + join(defined, ", ") + ")");
+    }
+    config.bcs.push_back(bc);
+  }
+}
+
+std::string resolve_against(const std::string& file, const std::string& base_dir) {
+  std::filesystem::path path(file);
+  if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
+  return path.lexically_normal().string();
+}
+
+/// The value at `path` as written, or `fallback` (the default in use) when absent.
+std::string shown_at(const toml::table& root, const std::string& path,
+                     const std::string& fallback) {
+  const toml::node* node = find_path(root, path);
+  return node == nullptr ? fallback : show(*node);
+}
+
+/// A number with 6 significant digits, for derived quantities in messages.
+std::string short_number(double x) {
+  std::array<char, 32> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.6g", x);
+  return buffer.data();
+}
+
+void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
+                        Problems& problems) {
+  if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
+      config.time.dt > config.time.t_end) {
+    problems.bad_value("time.dt", shown_at(root, "time.dt", format_number(config.time.dt)),
+                       "must be <= time.t_end = " +
+                           shown_at(root, "time.t_end", format_number(config.time.t_end)) + " (s)");
+  }
+
+  const auto& material = config.material;
+  const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
+  if (!problems.is_bad("material.lambda") && !problems.is_bad("material.mu") &&
+      !(bulk_like > 0.0)) {
+    problems.bad_value(
+        "material.lambda", shown_at(root, "material.lambda", format_number(material.lambda)),
+        "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");
+  }
+
+  if (!problems.is_bad("output.line_start") && !problems.is_bad("output.line_end") &&
+      config.output.line_start == config.output.line_end) {
+    problems.bad_value("output.line_end",
+                       shown_at(root, "output.line_end", format_value(config.output.line_end)),
+                       "must differ from output.line_start");
+  }
+
+  if (!problems.is_bad("mesh.file") && !config.mesh.file.empty()) {
+    const std::string given = config.mesh.file;
+    config.mesh.file = resolve_against(given, base_dir);
+    if (config.mesh.source == MeshSource::File && !problems.is_bad("mesh.source")) {
+      std::error_code error;
+      const auto status = std::filesystem::status(config.mesh.file, error);
+      if (!std::filesystem::exists(status)) {
+        problems.bad_value("mesh.file", quote(given),
+                           "file not found (looked for " + config.mesh.file + ")");
+      } else if (std::filesystem::is_directory(status)) {
+        problems.bad_value("mesh.file", quote(given), "is a folder, not a mesh file");
+      }
+    }
+  } else if (config.mesh.source == MeshSource::File && !problems.is_bad("mesh.source") &&
+             !problems.is_bad("mesh.file")) {
+    if (find_path(root, "mesh.file") == nullptr) {
+      problems.bad_key("mesh.file", "required when mesh.source = \"file\"");
+    } else {
+      problems.bad_value("mesh.file", "\"\"", "required when mesh.source = \"file\"");
+    }
+  }
+}
+
+}  // namespace
+
+CaseError::CaseError(std::vector<std::string> problems)
+    : std::runtime_error(join(problems, "\n")), problems_(std::move(problems)) {}
+
+const std::vector<std::string>& CaseError::problems() const { return problems_; }
+
+Config parse_case(const std::string& toml_text, const std::string& source_name,
+                  const std::vector<std::string>& overrides, const std::string& base_dir) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw CaseError({source_name + ":" + std::to_string(begin.line) + ":" +
+                     std::to_string(begin.column) +
+                     ": TOML syntax error: " + std::string(error.description())});
+  }
+
+  Problems problems(source_name);
+  for (const auto& argument : overrides) {
+    std::string problem = apply_override(root, argument, problems);
+    if (!problem.empty()) problems.add(std::move(problem));
+  }
+
+  Config config;
+  config.case_file = source_name;
+  check_unknown_keys(root, "", problems);
+  read_global_keys(root, config, problems);
+  std::set<std::string> curve_names;
+  read_curves(root, config, curve_names, problems);
+  read_boundaries(root, curve_names, config, problems);
+  check_cross_fields(root, base_dir, config, problems);
+
+  if (!problems.empty()) throw CaseError(problems.take());
+  return config;
+}
+
+Config read_case_file(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw CaseError(
+        {path + ": " +
+         (std::filesystem::exists(path, error) ? "not a regular file" : "case file not found")});
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw CaseError({path + ": cannot read the case file"});
+  std::string base_dir = std::filesystem::path(path).parent_path().string();
+  if (base_dir.empty()) base_dir = ".";
+  return parse_case(text.str(), path, overrides, base_dir);
+}
+
+void check_boundaries(const Config& config, const std::vector<std::string>& mesh_boundary_names) {
+  const std::string source = config.case_file.empty() ? std::string{} : config.case_file + ": ";
+  const std::string available = mesh_boundary_names.empty()
+                                    ? "the mesh has no named boundaries"
+                                    : "mesh boundaries: " + join(mesh_boundary_names, ", ");
+  auto in_mesh = [&](const std::string& name) {
+    return std::find(mesh_boundary_names.begin(), mesh_boundary_names.end(), name) !=
+           mesh_boundary_names.end();
+  };
+  std::vector<std::string> problems;
+  for (std::size_t i = 0; i < config.bcs.size(); ++i) {
+    const auto& bc = config.bcs[i];
+    if (!in_mesh(bc.boundary)) {
+      problems.push_back(source + "boundary[" + std::to_string(i) + "].name = " +
+                         quote(bc.boundary) + ": no such boundary in the mesh (" + available + ")");
+    }
+  }
+  for (const auto& face : config.mesh.cylinder.grading_faces) {
+    if (!in_mesh(face)) {
+      problems.push_back(
+          source + "mesh.grading_faces = " + format_value(config.mesh.cylinder.grading_faces) +
+          ": " + quote(face) + " is not a boundary of the mesh (" + available + ")");
+    }
+  }
+  if (!problems.empty()) throw CaseError(std::move(problems));
+}
+
+}  // namespace biphasic

@@ -1,0 +1,738 @@
+// The case-file schema table, and what is generated from it: the Markdown key reference and
+// the JSON dump of a resolved Config.
+#include "case_schema.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+
+#include "biphasic/io/case_file.hpp"
+
+namespace biphasic::case_schema {
+
+namespace {
+
+template <class E>
+using Names = std::vector<std::pair<std::string, E>>;
+
+const Names<MeshSource>& mesh_source_names() {
+  static const Names<MeshSource> names{{"quarter_cylinder", MeshSource::QuarterCylinder},
+                                       {"file", MeshSource::File}};
+  return names;
+}
+
+const Names<BcType>& bc_names() {
+  static const Names<BcType> names{
+      {"displacement", BcType::Displacement}, {"symmetry", BcType::Symmetry},
+      {"pressure", BcType::Pressure},         {"flux", BcType::Flux},
+      {"traction", BcType::Traction},         {"normal_traction", BcType::NormalTraction}};
+  return names;
+}
+
+const Names<int>& component_names() {
+  static const Names<int> names{{"x", 0}, {"y", 1}, {"z", 2}};
+  return names;
+}
+
+const Names<Stabilisation>& stabilisation_names() {
+  static const Names<Stabilisation> names{{"none", Stabilisation::None},
+                                          {"gls", Stabilisation::Gls}};
+  return names;
+}
+
+const Names<ElementLength>& element_length_names() {
+  static const Names<ElementLength> names{{"circumradius", ElementLength::Circumradius},
+                                          {"shortest_edge", ElementLength::ShortestEdge},
+                                          {"longest_edge", ElementLength::LongestEdge},
+                                          {"volume_diameter", ElementLength::VolumeDiameter}};
+  return names;
+}
+
+const Names<Integrator>& integrator_names() {
+  static const Names<Integrator> names{{"backward_euler", Integrator::BackwardEuler}};
+  return names;
+}
+
+const Names<LinearSolverType>& linear_solver_names() {
+  static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu}};
+  return names;
+}
+
+const Names<Ordering>& ordering_names() {
+  static const Names<Ordering> names{
+      {"amd", Ordering::Amd}, {"colamd", Ordering::Colamd}, {"metis", Ordering::Metis}};
+  return names;
+}
+
+template <class E>
+std::vector<std::string> names_of(const Names<E>& names) {
+  std::vector<std::string> out;
+  for (const auto& entry : names) out.push_back(entry.first);
+  return out;
+}
+
+template <class E>
+std::string name_of(const Names<E>& names, E value) {
+  for (const auto& entry : names) {
+    if (entry.second == value) return entry.first;
+  }
+  throw std::logic_error("case schema: enum value without a name");
+}
+
+template <class E>
+E value_of(const Names<E>& names, const std::string& name) {
+  for (const auto& entry : names) {
+    if (entry.first == name) return entry.second;
+  }
+  throw std::logic_error("case schema: unknown choice '" + name + "'");
+}
+
+Range above(double a) { return Range{a, std::nullopt, true, false}; }
+Range at_least(double a) { return Range{a, std::nullopt, false, false}; }
+Range strictly_between(double a, double b) { return Range{a, b, true, true}; }
+Range from_to(double a, double b) { return Range{a, b, false, false}; }
+
+template <class Target>
+Key<Target> make_key(std::string path, Kind kind, std::string unit, std::string help) {
+  Key<Target> key;
+  key.path = std::move(path);
+  key.kind = kind;
+  key.unit = std::move(unit);
+  key.help = std::move(help);
+  return key;
+}
+
+// The builders below take `access`, a generic lambda returning a reference to the field, so
+// one accessor serves both storing (non-const) and fetching (const).
+
+template <class Target, class Access>
+Key<Target> number_key(std::string path, Range range, std::string unit, std::string help,
+                       Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Number, std::move(unit), std::move(help));
+  key.range = range;
+  key.store = [access](Target& t, const Value& v) { access(t) = std::get<double>(v); };
+  key.fetch = [access](const Target& t) -> Value { return double{access(t)}; };
+  return key;
+}
+
+template <class Target, class Access>
+Key<Target> integer_key(std::string path, Range range, std::vector<std::int64_t> allowed,
+                        std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Integer, "", std::move(help));
+  key.range = range;
+  key.allowed = std::move(allowed);
+  key.store = [access](Target& t, const Value& v) {
+    access(t) = static_cast<int>(std::get<std::int64_t>(v));
+  };
+  key.fetch = [access](const Target& t) -> Value { return std::int64_t{access(t)}; };
+  return key;
+}
+
+template <class Target, class Access>
+Key<Target> bool_key(std::string path, std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Boolean, "", std::move(help));
+  key.store = [access](Target& t, const Value& v) { access(t) = std::get<bool>(v); };
+  key.fetch = [access](const Target& t) -> Value { return bool{access(t)}; };
+  return key;
+}
+
+template <class Target, class Access>
+Key<Target> string_key(std::string path, std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::String, "", std::move(help));
+  key.store = [access](Target& t, const Value& v) { access(t) = std::get<std::string>(v); };
+  key.fetch = [access](const Target& t) -> Value { return std::string{access(t)}; };
+  return key;
+}
+
+template <class Target, class E, class Access>
+Key<Target> choice_key(std::string path, const Names<E>& names, std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Choice, "", std::move(help));
+  key.choices = names_of(names);
+  key.store = [access, &names](Target& t, const Value& v) {
+    access(t) = value_of(names, std::get<std::string>(v));
+  };
+  key.fetch = [access, &names](const Target& t) -> Value { return name_of(names, access(t)); };
+  return key;
+}
+
+template <class Target, class Access>
+Key<Target> vector_key(std::string path, std::string unit, std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Vector3, std::move(unit), std::move(help));
+  key.store = [access](Target& t, const Value& v) {
+    access(t) = std::get<std::array<double, 3>>(v);
+  };
+  key.fetch = [access](const Target& t) -> Value { return std::array<double, 3>{access(t)}; };
+  return key;
+}
+
+template <class Target, class Access>
+Key<Target> string_list_key(std::string path, std::vector<std::string> choices, std::string help,
+                            Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::StringList, "", std::move(help));
+  key.choices = std::move(choices);
+  key.store = [access](Target& t, const Value& v) {
+    access(t) = std::get<std::vector<std::string>>(v);
+  };
+  key.fetch = [access](const Target& t) -> Value { return std::vector<std::string>{access(t)}; };
+  return key;
+}
+
+/// Per-type rule: `required` types must give the key, `forbidden` ones must not, others may.
+std::array<Need, kBcTypeCount> needs(std::initializer_list<BcType> required,
+                                     std::initializer_list<BcType> forbidden) {
+  std::array<Need, kBcTypeCount> out{};
+  out.fill(Need::Optional);
+  for (BcType t : required) out[static_cast<std::size_t>(t)] = Need::Required;
+  for (BcType t : forbidden) out[static_cast<std::size_t>(t)] = Need::Forbidden;
+  return out;
+}
+
+std::vector<Key<Config>> build_global_keys() {
+  using C = Config;
+  std::vector<Key<C>> keys;
+
+  auto version =
+      make_key<C>("format_version", Kind::Integer, "", "Case-file format version; must be 1.");
+  version.allowed = {1};
+  version.required = true;
+  version.fetch = [](const C&) -> Value { return std::int64_t{1}; };
+  keys.push_back(version);
+  keys.push_back(string_key<C>(
+      "title", "Free-text title of the run, copied to the outputs.",
+      [](auto& c) -> auto& { return c.title; }));
+
+  keys.push_back(choice_key<C>(
+      "mesh.source", mesh_source_names(),
+      "Where the mesh comes from: the generated quarter cylinder, or a gmsh file (mesh.file).",
+      [](auto& c) -> auto& { return c.mesh.source; }));
+  keys.push_back(string_key<C>(
+      "mesh.file",
+      "gmsh .msh file (format 2.2 or 4.1, 4- or 10-node tetrahedra, named physical surfaces). "
+      "Required when mesh.source = \"file\", and must then exist; a relative path is relative "
+      "to the case file's folder.",
+      [](auto& c) -> auto& { return c.mesh.file; }));
+  keys.push_back(number_key<C>(
+      "mesh.radius", above(0), "mm", "Radius of the quarter cylinder.",
+      [](auto& c) -> auto& { return c.mesh.cylinder.radius; }));
+  keys.push_back(number_key<C>(
+      "mesh.height", above(0), "mm", "Height of the quarter cylinder.",
+      [](auto& c) -> auto& { return c.mesh.cylinder.height; }));
+  keys.push_back(number_key<C>(
+      "mesh.lc", above(0), "mm", "Characteristic element length.",
+      [](auto& c) -> auto& { return c.mesh.cylinder.lc; }));
+  keys.push_back(string_list_key<C>(
+      "mesh.grading_faces", {"bottom", "top", "lateral", "symmetry_x", "symmetry_y"},
+      "Faces of the quarter cylinder near which elements shrink to lc / grading_ratio "
+      "(empty = uniform mesh).",
+      [](auto& c) -> auto& { return c.mesh.cylinder.grading_faces; }));
+  keys.push_back(number_key<C>(
+      "mesh.grading_ratio", at_least(1), "",
+      "Element size on the graded faces is lc divided by this ratio (1 = uniform).",
+      [](auto& c) -> auto& { return c.mesh.cylinder.grading_ratio; }));
+  keys.push_back(number_key<C>(
+      "mesh.grading_distance", above(0), "mm",
+      "Distance from the graded faces over which the element size grows back to lc.",
+      [](auto& c) -> auto& { return c.mesh.cylinder.grading_distance; }));
+  keys.push_back(string_key<C>(
+      "mesh.write_msh",
+      "If not empty, write the generated mesh to this .msh file; a relative path is relative "
+      "to the output directory.",
+      [](auto& c) -> auto& { return c.mesh.cylinder.write_msh; }));
+
+  keys.push_back(number_key<C>(
+      "material.lambda", Range{}, "MPa",
+      "Lamé constant lambda of the solid skeleton; lambda + 2/3 mu must be > 0.",
+      [](auto& c) -> auto& { return c.material.lambda; }));
+  keys.push_back(number_key<C>(
+      "material.mu", above(0), "MPa", "Shear modulus mu.",
+      [](auto& c) -> auto& { return c.material.mu; }));
+  keys.push_back(number_key<C>(
+      "material.permeability", above(0), "mm^4/(N s)", "Permeability k of the solid skeleton.",
+      [](auto& c) -> auto& { return c.material.permeability; }));
+
+  auto curve = make_key<C>("curves.<name>", Kind::Curve, "s, -",
+                           "Named piecewise-linear load curve [[t, value], ...]: at least one "
+                           "point, times strictly increasing; constant before the first and "
+                           "after the last point. Referenced by boundary[i].curve.");
+  keys.push_back(curve);
+
+  keys.push_back(choice_key<C>(
+      "stabilisation.type", stabilisation_names(),
+      "Pressure stabilisation: none, or Galerkin least squares (gls).",
+      [](auto& c) -> auto& { return c.stabilisation.type; }));
+  keys.push_back(choice_key<C>(
+      "stabilisation.length", element_length_names(),
+      "Element length h in the GLS parameter c_e = h^2 / (4 k).",
+      [](auto& c) -> auto& { return c.stabilisation.length; }));
+  keys.push_back(number_key<C>(
+      "stabilisation.scale", above(0), "", "Multiplier of the GLS parameter c_e (1 = standard).",
+      [](auto& c) -> auto& { return c.stabilisation.scale; }));
+
+  keys.push_back(integer_key<C>(
+      "quadrature.points", Range{}, {1, 4, 5, 8, 27, 64, 125}, "Quadrature points per tetrahedron.",
+      [](auto& c) -> auto& { return c.quadrature_points; }));
+
+  keys.push_back(choice_key<C>(
+      "time.integrator", integrator_names(), "Time integrator.",
+      [](auto& c) -> auto& { return c.time.integrator; }));
+  keys.push_back(number_key<C>(
+      "time.t_end", above(0), "s", "End time of the run (starts at 0).",
+      [](auto& c) -> auto& { return c.time.t_end; }));
+  keys.push_back(number_key<C>(
+      "time.dt", above(0), "s", "Time step; must be <= time.t_end.",
+      [](auto& c) -> auto& { return c.time.dt; }));
+
+  keys.push_back(integer_key<C>(
+      "time.newton.max_iterations", from_to(1, 1000), {},
+      "Maximum Newton iterations per time step.",
+      [](auto& c) -> auto& { return c.time.newton.max_iterations; }));
+  keys.push_back(number_key<C>(
+      "time.newton.rtol_displacement", strictly_between(0, 1), "",
+      "Relative tolerance on the momentum residual (max norm, relative to the predictor's).",
+      [](auto& c) -> auto& { return c.time.newton.rtol_displacement; }));
+  keys.push_back(number_key<C>(
+      "time.newton.rtol_pressure", strictly_between(0, 1), "",
+      "Relative tolerance on the mass residual (max norm, relative to the predictor's).",
+      [](auto& c) -> auto& { return c.time.newton.rtol_pressure; }));
+  keys.push_back(number_key<C>(
+      "time.newton.atol_displacement", at_least(0), "N",
+      "Absolute tolerance on the momentum residual (max norm).",
+      [](auto& c) -> auto& { return c.time.newton.atol_displacement; }));
+  keys.push_back(number_key<C>(
+      "time.newton.atol_pressure", at_least(0), "mm^3/s",
+      "Absolute tolerance on the mass residual (max norm).",
+      [](auto& c) -> auto& { return c.time.newton.atol_pressure; }));
+  keys.push_back(integer_key<C>(
+      "time.newton.max_setup_calls", at_least(1), {},
+      "Newton iterations between Jacobian refreshes (1 = full Newton).",
+      [](auto& c) -> auto& { return c.time.newton.max_setup_calls; }));
+  keys.push_back(bool_key<C>(
+      "time.newton.reuse_across_steps",
+      "Keep the Jacobian factorisation from the previous time step.",
+      [](auto& c) -> auto& { return c.time.newton.reuse_across_steps; }));
+
+  keys.push_back(choice_key<C>(
+      "linear_solver.type", linear_solver_names(), "Sparse direct solver.",
+      [](auto& c) -> auto& { return c.linear_solver.type; }));
+  keys.push_back(choice_key<C>(
+      "linear_solver.ordering", ordering_names(),
+      "Fill-reducing ordering of the sparse factorisation.",
+      [](auto& c) -> auto& { return c.linear_solver.ordering; }));
+
+  keys.push_back(vector_key<C>(
+      "output.line_start", "mm", "Start point of the probe line.",
+      [](auto& c) -> auto& { return c.output.line_start; }));
+  keys.push_back(vector_key<C>(
+      "output.line_end", "mm", "End point of the probe line; must differ from line_start.",
+      [](auto& c) -> auto& { return c.output.line_end; }));
+  keys.push_back(integer_key<C>(
+      "output.every", at_least(1), {},
+      "Write outputs every n steps (the last step is always written).",
+      [](auto& c) -> auto& { return c.output.every; }));
+  keys.push_back(bool_key<C>(
+      "output.fields", "Write the HDF5/XDMF field output.",
+      [](auto& c) -> auto& { return c.output.fields; }));
+  keys.push_back(bool_key<C>(
+      "output.line", "Write the probe-line CSV output.",
+      [](auto& c) -> auto& { return c.output.line; }));
+  return keys;
+}
+
+std::vector<Key<BoundaryCondition>> build_boundary_keys() {
+  using B = BoundaryCondition;
+  using T = BcType;
+  std::vector<Key<B>> keys;
+
+  auto name = string_key<B>(
+      "name", "Name of the mesh boundary (gmsh physical surface).",
+      [](auto& b) -> auto& { return b.boundary; });
+  name.required = true;
+  name.non_empty = true;
+  keys.push_back(name);
+
+  auto type = choice_key<B>(
+      "type", bc_names(),
+      "Kind of condition: prescribed displacement component, symmetry (zero normal "
+      "displacement on an axis-aligned plane), fluid pressure, outward fluid flux, nominal "
+      "traction vector, or nominal normal traction (positive value pushes inwards).",
+      [](auto& b) -> auto& { return b.type; });
+  type.required = true;
+  keys.push_back(type);
+
+  auto component = choice_key<B>(
+      "component", component_names(), "Displacement component that is prescribed.",
+      [](auto& b) -> auto& { return b.component; });
+  component.per_type = true;
+  component.need =
+      needs({T::Displacement}, {T::Symmetry, T::Pressure, T::Flux, T::Traction, T::NormalTraction});
+  keys.push_back(component);
+
+  auto value = number_key<B>(
+      "value", Range{}, "mm, MPa or mm/s",
+      "Scale of the load curve: displacement [mm], pressure [MPa], flux [mm/s], normal "
+      "traction [MPa].",
+      [](auto& b) -> auto& { return b.value; });
+  value.per_type = true;
+  value.need =
+      needs({T::Displacement, T::Pressure, T::Flux, T::NormalTraction}, {T::Symmetry, T::Traction});
+  keys.push_back(value);
+
+  auto vector = vector_key<B>(
+      "vector", "MPa", "Nominal traction vector, scaled by the curve.",
+      [](auto& b) -> auto& { return b.vector; });
+  vector.per_type = true;
+  vector.need =
+      needs({T::Traction}, {T::Displacement, T::Symmetry, T::Pressure, T::Flux, T::NormalTraction});
+  keys.push_back(vector);
+
+  auto curve = string_key<B>(
+      "curve", "Name of an entry of [curves] scaling the condition in time; absent = constant 1.",
+      [](auto& b) -> auto& { return b.curve; });
+  curve.per_type = true;
+  curve.need = needs({}, {T::Symmetry});
+  keys.push_back(curve);
+  return keys;
+}
+
+// ---- Markdown ---------------------------------------------------------------------------
+
+std::string kind_name(Kind kind) {
+  switch (kind) {
+    case Kind::Integer:
+      return "integer";
+    case Kind::Number:
+      return "number";
+    case Kind::Boolean:
+      return "boolean";
+    case Kind::String:
+      return "string";
+    case Kind::Choice:
+      return "string";
+    case Kind::Vector3:
+      return "array of 3 numbers";
+    case Kind::StringList:
+      return "array of strings";
+    case Kind::Curve:
+      return "array of [t, value]";
+  }
+  return "";
+}
+
+std::string code_list(const std::vector<std::string>& items) {
+  std::vector<std::string> quoted;
+  for (const auto& item : items) quoted.push_back("`" + item + "`");
+  return join(quoted, ", ");
+}
+
+std::string allowed_text(const KeyInfo& key) {
+  switch (key.kind) {
+    case Kind::Integer:
+      if (key.allowed.size() == 1) return std::to_string(key.allowed.front());
+      if (!key.allowed.empty()) {
+        std::vector<std::string> items;
+        for (auto v : key.allowed) items.push_back(std::to_string(v));
+        return "one of " + join(items, ", ");
+      }
+      return key.range.describe();
+    case Kind::Number:
+      return key.range.describe();
+    case Kind::Boolean:
+      return "`true`, `false`";
+    case Kind::String:
+      return key.non_empty ? "not empty" : "";
+    case Kind::Choice:
+      return "one of " + code_list(key.choices);
+    case Kind::Vector3:
+      return key.range.describe();
+    case Kind::StringList:
+      return "each one of " + code_list(key.choices);
+    case Kind::Curve:
+      return ">= 1 point, t strictly increasing";
+  }
+  return "";
+}
+
+std::string per_type_text(const KeyInfo& key) {
+  std::vector<std::string> required;
+  std::vector<std::string> forbidden;
+  bool any_optional = false;
+  for (std::size_t i = 0; i < kBcTypeCount; ++i) {
+    if (key.need[i] == Need::Required) required.push_back(bc_type_names()[i]);
+    if (key.need[i] == Need::Forbidden) forbidden.push_back(bc_type_names()[i]);
+    if (key.need[i] == Need::Optional) any_optional = true;
+  }
+  std::vector<std::string> parts;
+  if (!required.empty()) parts.push_back("required for " + code_list(required));
+  if (any_optional) {
+    if (!forbidden.empty()) parts.push_back("not allowed for " + code_list(forbidden));
+    parts.push_back("optional otherwise");
+  } else if (!forbidden.empty()) {
+    parts.push_back("not allowed otherwise");
+  }
+  return join(parts, "; ");
+}
+
+std::string cell(std::string text) {
+  std::string out;
+  for (char ch : text) {
+    if (ch == '|')
+      out += "\\|";
+    else
+      out += ch;
+  }
+  return out;
+}
+
+template <class Target>
+std::string table_row(const Key<Target>& key, const std::string& shown_path,
+                      const std::string& default_text) {
+  return "| `" + shown_path + "` | " + kind_name(key.kind) + " | " + cell(default_text) + " | " +
+         cell(allowed_text(key)) + " | " + cell(key.unit) + " | " + cell(key.help) + " |\n";
+}
+
+const char* const kTableHeader =
+    "| Key | Type | Default | Allowed | Unit | Description |\n"
+    "| --- | --- | --- | --- | --- | --- |\n";
+
+std::string section_of(const std::string& path) {
+  auto dot = path.rfind('.');
+  return dot == std::string::npos ? std::string{} : path.substr(0, dot);
+}
+
+std::string boundary_section_markdown() {
+  std::string out = "### `[[boundary]]`\n\n";
+  out +=
+      "Boundary conditions, one `[[boundary]]` table each; at least one is required. With "
+      "`--set`, entry i (counted from 0) is `boundary[i]`, e.g. `--set "
+      "boundary[0].value=-0.1`.\n\n";
+  out += kTableHeader;
+  for (const auto& key : boundary_keys()) {
+    std::string default_text;
+    if (key.required) {
+      default_text = "required";
+    } else {
+      default_text = per_type_text(key);
+      if (key.fetch) {
+        auto shown = format_value(key.fetch(BoundaryCondition{}));
+        if (key.kind == Kind::String) default_text += "; default `" + shown + "`";
+      }
+    }
+    out += table_row(key, "boundary[i]." + key.path, default_text);
+  }
+  return out + "\n";
+}
+
+}  // namespace
+
+bool Range::contains(double x) const {
+  if (min && !(min_open ? x > *min : x >= *min)) return false;
+  if (max && !(max_open ? x < *max : x <= *max)) return false;
+  return true;
+}
+
+namespace {
+/// A bound as written in a rule: whole numbers without ".0" ("> 0", "in [1, 1000]").
+std::string format_bound(double x) {
+  if (std::isfinite(x) && x == std::trunc(x) && std::abs(x) < 1e15) {
+    return std::to_string(static_cast<long long>(x));
+  }
+  return format_number(x);
+}
+}  // namespace
+
+std::string Range::describe() const {
+  if (min && max) {
+    return std::string("in ") + (min_open ? "(" : "[") + format_bound(*min) + ", " +
+           format_bound(*max) + (max_open ? ")" : "]");
+  }
+  if (min) return (min_open ? "> " : ">= ") + format_bound(*min);
+  if (max) return (max_open ? "< " : "<= ") + format_bound(*max);
+  return "";
+}
+
+const std::vector<Key<Config>>& global_keys() {
+  static const auto keys = build_global_keys();
+  return keys;
+}
+
+const std::vector<Key<BoundaryCondition>>& boundary_keys() {
+  static const auto keys = build_boundary_keys();
+  return keys;
+}
+
+const std::vector<std::string>& bc_type_names() {
+  static const auto names = names_of(bc_names());
+  return names;
+}
+
+const std::string& bc_type_name(BcType type) {
+  return bc_type_names().at(static_cast<std::size_t>(type));
+}
+
+std::string format_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::array<char, 64> buffer{};
+  auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x);
+  std::string text(buffer.data(), result.ptr);
+  auto e = text.find('e');
+  if (e == std::string::npos) {
+    if (text.find('.') == std::string::npos) text += ".0";
+    return text;
+  }
+  // "1e-08" -> "1e-8", "1e+20" -> "1e20"
+  std::string mantissa = text.substr(0, e);
+  std::string exponent = text.substr(e + 1);
+  std::string sign;
+  if (!exponent.empty() && (exponent[0] == '-' || exponent[0] == '+')) {
+    if (exponent[0] == '-') sign = "-";
+    exponent.erase(0, 1);
+  }
+  auto first = exponent.find_first_not_of('0');
+  exponent = first == std::string::npos ? "0" : exponent.substr(first);
+  return mantissa + "e" + sign + exponent;
+}
+
+std::string quote(const std::string& text) {
+  std::string out = "\"";
+  for (char ch : text) {
+    switch (ch) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      default:
+        if (static_cast<unsigned char>(ch) < 0x20) {
+          std::array<char, 8> hex{};
+          std::snprintf(hex.data(), hex.size(), "\\u%04x", static_cast<unsigned>(ch));
+          out += hex.data();
+        } else {
+          out += ch;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string format_value(const Value& value) {
+  struct Visitor {
+    std::string operator()(std::int64_t v) const { return std::to_string(v); }
+    std::string operator()(double v) const { return format_number(v); }
+    std::string operator()(bool v) const { return v ? "true" : "false"; }
+    std::string operator()(const std::string& v) const { return quote(v); }
+    std::string operator()(const std::array<double, 3>& v) const {
+      return "[" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) +
+             "]";
+    }
+    std::string operator()(const std::vector<std::string>& v) const {
+      std::vector<std::string> items;
+      for (const auto& s : v) items.push_back(quote(s));
+      return "[" + join(items, ", ") + "]";
+    }
+  };
+  return std::visit(Visitor{}, value);
+}
+
+nlohmann::json value_to_json(const Value& value) {
+  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
+}
+
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+}  // namespace biphasic::case_schema
+
+namespace biphasic {
+
+using namespace case_schema;
+
+std::string case_schema_markdown() {
+  std::string out;
+  out += "## Key reference\n\n";
+  out +=
+      "Types: *integer* is a TOML integer; *number* is a TOML float, or an integer; strings "
+      "with an *Allowed* list must be one of the listed words. Keys left out take the default "
+      "shown. Units: mm, N, s, MPa.\n\n";
+
+  const Config defaults;
+  std::string current = "\x01";  // no section yet
+  for (const auto& key : global_keys()) {
+    const std::string section = key.kind == Kind::Curve ? "curves" : section_of(key.path);
+    if (section != current) {
+      if (current == "curves")
+        out += "\n" + boundary_section_markdown();
+      else if (current != "\x01")
+        out += "\n";
+      current = section;
+      out += section.empty() ? std::string("### Top level\n\n") : "### `[" + section + "]`\n\n";
+      out += kTableHeader;
+    }
+    std::string default_text;
+    if (key.required)
+      default_text = "required";
+    else if (key.kind == Kind::Curve)
+      default_text = "none";
+    else if (key.fetch)
+      default_text = "`" + format_value(key.fetch(defaults)) + "`";
+    out += table_row(key, key.path, default_text);
+  }
+  return out;
+}
+
+nlohmann::json config_to_json(const Config& config) {
+  nlohmann::json out = nlohmann::json::object();
+  out["case_file"] = config.case_file;
+  for (const auto& key : global_keys()) {
+    if (!key.fetch) continue;
+    nlohmann::json* node = &out;
+    std::string path = key.path;
+    for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.')) {
+      node = &(*node)[path.substr(0, dot)];
+      path.erase(0, dot + 1);
+    }
+    (*node)[path] = value_to_json(key.fetch(config));
+  }
+
+  nlohmann::json curves = nlohmann::json::object();
+  for (const auto& [name, curve] : config.curves) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& [t, v] : curve.points) points.push_back({t, v});
+    curves[name] = points;
+  }
+  out["curves"] = curves;
+
+  nlohmann::json bcs = nlohmann::json::array();
+  for (const auto& bc : config.bcs) {
+    nlohmann::json entry = nlohmann::json::object();
+    for (const auto& key : boundary_keys()) {
+      if (key.per_type && key.need[static_cast<std::size_t>(bc.type)] == Need::Forbidden) continue;
+      entry[key.path] = value_to_json(key.fetch(bc));
+    }
+    bcs.push_back(entry);
+  }
+  out["boundary"] = bcs;
+  return out;
+}
+
+}  // namespace biphasic

@@ -1,0 +1,394 @@
+#include "biphasic/io/field_writer.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <type_traits>
+#include <utility>
+
+namespace biphasic {
+
+static_assert(std::is_same_v<hid_t, std::int64_t>, "FieldWriter stores hid_t as int64");
+
+std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh) {
+  const Index nv = mesh.num_vertices;
+  const Index nn = mesh.num_nodes();
+  if (nv < 0 || nv > nn) {
+    throw std::runtime_error("mesh: num_vertices = " + std::to_string(nv) + " with " +
+                             std::to_string(nn) + " nodes");
+  }
+  constexpr Index kUnset = -1;
+  std::vector<std::array<Index, 2>> edges(static_cast<std::size_t>(nn - nv), {kUnset, kUnset});
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    const Tet10& tet = mesh.tets[e];
+    for (int c = 0; c < 4; ++c) {
+      if (tet[c] < 0 || tet[c] >= nv) {
+        throw std::runtime_error("mesh: tetrahedron " + std::to_string(e) + " has corner node " +
+                                 std::to_string(tet[c]) + ", not a vertex (0.." +
+                                 std::to_string(nv - 1) + ")");
+      }
+    }
+    for (std::size_t k = 0; k < kTetEdges.size(); ++k) {
+      const Index n = tet[4 + k];
+      if (n < nv || n >= nn) {
+        throw std::runtime_error("mesh: tetrahedron " + std::to_string(e) + " has edge node " +
+                                 std::to_string(n) + ", not an edge node (" + std::to_string(nv) +
+                                 ".." + std::to_string(nn - 1) + ")");
+      }
+      Index v0 = tet[kTetEdges[k][0]];
+      Index v1 = tet[kTetEdges[k][1]];
+      if (v1 < v0) std::swap(v0, v1);
+      auto& slot = edges[static_cast<std::size_t>(n - nv)];
+      if (slot[0] == kUnset) {
+        slot = {v0, v1};
+      } else if (slot[0] != v0 || slot[1] != v1) {
+        throw std::runtime_error("mesh: edge node " + std::to_string(n) + " sits on edge (" +
+                                 std::to_string(slot[0]) + "," + std::to_string(slot[1]) +
+                                 ") and on edge (" + std::to_string(v0) + "," + std::to_string(v1) +
+                                 ") in tetrahedron " + std::to_string(e));
+      }
+    }
+  }
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    if (edges[k][0] == kUnset) {
+      throw std::runtime_error("mesh: edge node " + std::to_string(nv + static_cast<Index>(k)) +
+                               " belongs to no tetrahedron");
+    }
+  }
+  return edges;
+}
+
+std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& edges,
+                                      const std::vector<double>& p_vertices) {
+  std::vector<double> p(p_vertices.size() + edges.size());
+  std::copy(p_vertices.begin(), p_vertices.end(), p.begin());
+  const auto nv = static_cast<Index>(p_vertices.size());
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const auto [v0, v1] = edges[k];
+    if (v0 < 0 || v1 < 0 || v0 >= nv || v1 >= nv) {
+      throw std::runtime_error("pressure_at_nodes: edge (" + std::to_string(v0) + "," +
+                               std::to_string(v1) + ") outside the " + std::to_string(nv) +
+                               " vertex pressures");
+    }
+    p[p_vertices.size() + k] =
+        0.5 * (p_vertices[static_cast<std::size_t>(v0)] + p_vertices[static_cast<std::size_t>(v1)]);
+  }
+  return p;
+}
+
+namespace {
+
+/// Owns one HDF5 identifier and closes it with the matching H5?close.
+class H5Id {
+ public:
+  H5Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~H5Id() {
+    if (id_ >= 0) close_(id_);
+  }
+  H5Id(H5Id&& other) noexcept : id_(std::exchange(other.id_, -1)), close_(other.close_) {}
+  H5Id(const H5Id&) = delete;
+  H5Id& operator=(const H5Id&) = delete;
+  H5Id& operator=(H5Id&&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+std::string fmt_double(double x) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, res.ptr);
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+/// Helper bound to one open file that turns HDF5 failures into exceptions naming the file.
+class H5File {
+ public:
+  H5File(hid_t file, const std::string& path) : file_(file), path_(path) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error("FieldWriter: " + path_ + ": " + what);
+  }
+
+  void create_group(const std::string& name) const {
+    H5Id g(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!g.valid()) fail("cannot create group " + name);
+  }
+
+  /// Creates and fills a dataset of the given shape; returns it for attaching attributes.
+  H5Id write_dataset(const std::string& name, hid_t file_type, hid_t mem_type,
+                     const std::vector<hsize_t>& dims, const void* data) const {
+    H5Id space(dims.empty() ? H5Screate(H5S_SCALAR)
+                            : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+               H5Sclose);
+    if (!space.valid()) fail("cannot create dataspace for " + name);
+    H5Id set(H5Dcreate2(file_, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                        H5P_DEFAULT),
+             H5Dclose);
+    if (!set.valid()) fail("cannot create dataset " + name);
+    if (H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+      fail("cannot write dataset " + name);
+    }
+    return set;
+  }
+
+  void write_attribute(hid_t object, const std::string& object_name, const std::string& name,
+                       double value) const {
+    H5Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    H5Id attr(
+        H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+        H5Aclose);
+    if (!space.valid() || !attr.valid() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0) {
+      fail("cannot write attribute " + name + " of " + object_name);
+    }
+  }
+
+  void write_attribute(hid_t object, const std::string& object_name, const std::string& name,
+                       const std::string& value) const {
+    H5Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+    if (!type.valid() || H5Tset_size(type.get(), value.empty() ? 1 : value.size()) < 0 ||
+        H5Tset_strpad(type.get(), H5T_STR_NULLTERM) < 0) {
+      fail("cannot create string type for attribute " + name + " of " + object_name);
+    }
+    H5Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    H5Id attr(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+    if (!space.valid() || !attr.valid() || H5Awrite(attr.get(), type.get(), value.c_str()) < 0) {
+      fail("cannot write attribute " + name + " of " + object_name);
+    }
+  }
+
+ private:
+  hid_t file_;
+  const std::string& path_;
+};
+
+constexpr const char* kTimes = "/fields/times";
+constexpr hsize_t kTimesChunk = 64;
+
+}  // namespace
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh)
+    : stem_(stem),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      num_tets_(static_cast<Index>(mesh.tets.size())) {
+  namespace fs = std::filesystem;
+  const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
+  h5_path_ = (dir / (stem + ".h5")).string();
+  xdmf_path_ = (dir / (stem + ".xdmf")).string();
+  if (stem.empty() || stem.find('/') != std::string::npos) {
+    throw std::runtime_error("FieldWriter: invalid file stem '" + stem + "' in " + directory);
+  }
+  if (num_tets_ == 0) throw std::runtime_error("FieldWriter: " + h5_path_ + ": mesh has no cells");
+  edges_ = edge_node_vertices(mesh);
+
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) {
+    throw std::runtime_error("FieldWriter: cannot create output folder " + dir.string() + ": " +
+                             ec.message());
+  }
+  // An index left over from an earlier run would point into the file truncated below.
+  fs::remove(xdmf_path_, ec);
+  if (ec) {
+    throw std::runtime_error("FieldWriter: cannot remove stale " + xdmf_path_ + ": " +
+                             ec.message());
+  }
+
+  file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_);
+
+  try {
+    const H5File h5(file_, h5_path_);
+    h5.create_group("/mesh");
+    h5.create_group("/fields");
+    h5.create_group("/fields/displacement");
+    h5.create_group("/fields/pressure");
+    h5.create_group("/fields/pressure_vertices");
+
+    std::vector<double> xyz;
+    xyz.reserve(3 * mesh.nodes.size());
+    for (const Point& x : mesh.nodes) xyz.insert(xyz.end(), x.begin(), x.end());
+    {
+      H5Id set = h5.write_dataset("/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                                  {static_cast<hsize_t>(num_nodes_), 3}, xyz.data());
+      h5.write_attribute(set.get(), "/mesh/coordinates", "units", "mm");
+    }
+    std::vector<std::int64_t> topo;
+    topo.reserve(10 * mesh.tets.size());
+    for (const Tet10& tet : mesh.tets) topo.insert(topo.end(), tet.begin(), tet.end());
+    h5.write_dataset("/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64,
+                     {static_cast<hsize_t>(num_tets_), 10}, topo.data());
+    const std::int64_t nv = num_vertices_;
+    h5.write_dataset("/mesh/vertex_count", H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &nv);
+
+    // Output times: 1-D, grows by one per write.
+    const hsize_t zero = 0;
+    const hsize_t unlimited = H5S_UNLIMITED;
+    H5Id space(H5Screate_simple(1, &zero, &unlimited), H5Sclose);
+    H5Id plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    if (!space.valid() || !plist.valid() || H5Pset_chunk(plist.get(), 1, &kTimesChunk) < 0) {
+      h5.fail("cannot set up dataset " + std::string(kTimes));
+    }
+    H5Id times(H5Dcreate2(file_, kTimes, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, plist.get(),
+                          H5P_DEFAULT),
+               H5Dclose);
+    if (!times.valid()) h5.fail("cannot create dataset " + std::string(kTimes));
+    h5.write_attribute(times.get(), kTimes, "units", "s");
+
+    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
+  } catch (...) {
+    H5Fclose(file_);
+    file_ = -1;
+    throw;
+  }
+}
+
+FieldWriter::~FieldWriter() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void FieldWriter::write(double t, const std::vector<double>& u,
+                        const std::vector<double>& p_vertices) {
+  const H5File h5(file_, h5_path_);
+  const auto nn = static_cast<std::size_t>(num_nodes_);
+  const auto nv = static_cast<std::size_t>(num_vertices_);
+  if (u.size() != 3 * nn) {
+    h5.fail("displacement has " + std::to_string(u.size()) + " entries, expected 3 x " +
+            std::to_string(nn) + " nodes = " + std::to_string(3 * nn));
+  }
+  if (p_vertices.size() != nv) {
+    h5.fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
+            std::to_string(nv) + " (one per vertex)");
+  }
+  if (!std::isfinite(t)) h5.fail("output time is not finite");
+
+  const std::string step = std::to_string(times_.size());
+  const std::vector<double> p_nodes = pressure_at_nodes(edges_, p_vertices);
+
+  const auto put = [&](const std::string& group, std::vector<hsize_t> dims, const double* data,
+                       const char* units) {
+    const std::string name = "/fields/" + group + "/" + step;
+    H5Id set = h5.write_dataset(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data);
+    h5.write_attribute(set.get(), name, "time", t);
+    h5.write_attribute(set.get(), name, "units", units);
+  };
+  put("displacement", {nn, 3}, u.data(), "mm");
+  put("pressure", {nn}, p_nodes.data(), "MPa");
+  put("pressure_vertices", {nv}, p_vertices.data(), "MPa");
+
+  {
+    H5Id set(H5Dopen2(file_, kTimes, H5P_DEFAULT), H5Dclose);
+    const hsize_t old_size = times_.size();
+    const hsize_t new_size = old_size + 1;
+    const hsize_t one = 1;
+    if (!set.valid() || H5Dset_extent(set.get(), &new_size) < 0) {
+      h5.fail("cannot extend " + std::string(kTimes));
+    }
+    H5Id file_space(H5Dget_space(set.get()), H5Sclose);
+    H5Id mem_space(H5Screate_simple(1, &one, nullptr), H5Sclose);
+    if (!file_space.valid() || !mem_space.valid() ||
+        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &old_size, nullptr, &one, nullptr) <
+            0 ||
+        H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(), H5P_DEFAULT, &t) <
+            0) {
+      h5.fail("cannot append to " + std::string(kTimes));
+    }
+  }
+  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
+
+  times_.push_back(t);
+  write_xdmf();
+}
+
+void FieldWriter::write_xdmf() const {
+  const std::string h5_name = xml_escape(stem_ + ".h5");
+  const std::string n = std::to_string(num_nodes_);
+  const std::string e = std::to_string(num_tets_);
+  const auto item = [&](const std::string& dims, const char* type, int precision,
+                        const std::string& path) {
+    return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"" +
+           std::to_string(precision) + "\" Format=\"HDF\">" + h5_name + ":" + path + "</DataItem>";
+  };
+
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n"
+    << "<Xdmf Version=\"3.0\">\n"
+    << "  <Domain>\n"
+    << "    <Grid Name=\"" << xml_escape(stem_)
+    << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t i = 0; i < times_.size(); ++i) {
+    const std::string step = std::to_string(i);
+    x << "      <Grid Name=\"step_" << step << "\" GridType=\"Uniform\">\n"
+      << "        <Time Value=\"" << fmt_double(times_[i]) << "\"/>\n"
+      << "        <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"" << e << "\">\n"
+      << "          " << item(e + " 10", "Int", 8, "/mesh/topology") << "\n"
+      << "        </Topology>\n"
+      << "        <Geometry GeometryType=\"XYZ\">\n"
+      << "          " << item(n + " 3", "Float", 8, "/mesh/coordinates") << "\n"
+      << "        </Geometry>\n"
+      << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
+      << "          " << item(n + " 3", "Float", 8, "/fields/displacement/" + step) << "\n"
+      << "        </Attribute>\n"
+      << "        <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+      << "          " << item(n, "Float", 8, "/fields/pressure/" + step) << "\n"
+      << "        </Attribute>\n"
+      << "      </Grid>\n";
+  }
+  x << "    </Grid>\n"
+    << "  </Domain>\n"
+    << "</Xdmf>\n";
+
+  const std::string tmp = xdmf_path_ + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << x.str();
+    out.flush();
+    if (!out) throw std::runtime_error("FieldWriter: cannot write " + tmp);
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, xdmf_path_, ec);
+  if (ec) {
+    throw std::runtime_error("FieldWriter: cannot rename " + tmp + " to " + xdmf_path_ + ": " +
+                             ec.message());
+  }
+}
+
+}  // namespace biphasic
