@@ -1,0 +1,46 @@
+// Degrees of freedom and the fixed CSC pattern of the P2/P1 system, built once per mesh.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "biphasic/mesh/mesh.hpp"
+#include "biphasic/physics/biphasic_element.hpp"
+
+namespace biphasic {
+
+/// Unknowns y = (u of every node, node-major: 3n + c; then p of every vertex: 3N + v).
+/// The CSC pattern couples every pair of unknowns that share an element (all four blocks
+/// u–u, u–p, p–u, p–p); row indices are sorted within each column.
+class SparsityPattern {
+ public:
+  explicit SparsityPattern(const Mesh& mesh);
+
+  Index size() const { return num_dofs_; }
+  Index num_u() const { return 3 * num_nodes_; }
+  Index nnz() const { return static_cast<Index>(rowind_.size()); }
+  Index u_dof(Index node, int c) const { return 3 * node + c; }
+  Index p_dof(Index vertex) const { return 3 * num_nodes_ + vertex; }
+  /// Global unknown of local element dof s (0–29: u of node s/3, component s%3; 30–33: p).
+  Index global_dof(const Tet10& tet, int s) const {
+    return s < 30 ? 3 * tet[s / 3] + s % 3 : 3 * num_nodes_ + tet[s - 30];
+  }
+  const std::vector<Index>& colptr() const { return colptr_; }
+  const std::vector<Index>& rowind() const { return rowind_; }
+  /// Position in the value array of entry (row, col); −1 if outside the pattern.
+  Index find(Index row, Index col) const;
+
+  /// Adds an element matrix into `values` (the CSC value array), skipping rows flagged in
+  /// `skip_row` (Dirichlet rows). `scale` multiplies the contribution.
+  void scatter(Index element, const Tet10& tet, const ElementMatrix& M, double scale,
+               const std::vector<char>& skip_row, double* values) const;
+
+ private:
+  Index num_nodes_ = 0, num_vertices_ = 0, num_dofs_ = 0;
+  std::vector<Index> adj_ptr_, adj_;  ///< sorted node neighbourhoods (vertices sort first)
+  std::vector<Index> colptr_, rowind_;
+  std::vector<std::array<std::int32_t, 100>> local_pos_;  ///< [a·10+b] = index of b in adj(a)
+};
+
+}  // namespace biphasic

@@ -1,0 +1,90 @@
+// The semidiscrete biphasic system F(t, y, ẏ) = 0 on a mesh (DESIGN.md §2), with its
+// Jacobian dF/dy + c_j dF/dẏ assembled into the fixed CSC pattern. Both time integrators
+// drive this one object.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "biphasic/assembly/sparsity.hpp"
+#include "biphasic/io/config.hpp"
+#include "biphasic/physics/biphasic_element.hpp"
+
+namespace biphasic {
+
+/// Counters and timings of the residual/Jacobian evaluations [s].
+struct AssemblyStats {
+  long residual_evaluations = 0;
+  long jacobian_evaluations = 0;
+  double residual_seconds = 0.0;
+  double jacobian_seconds = 0.0;
+};
+
+/// Thrown when an element inverts (det F ≤ 0) during an evaluation.
+struct InvertedElement : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class BiphasicProblem {
+ public:
+  /// Resolves boundary conditions by name, builds the geometry cache and the pattern.
+  /// Throws std::runtime_error naming the boundary condition on inconsistent input.
+  BiphasicProblem(const Mesh& mesh, const Config& config);
+
+  const Mesh& mesh() const { return mesh_; }
+  const SparsityPattern& pattern() const { return pattern_; }
+  Index size() const { return pattern_.size(); }
+  Index num_u() const { return pattern_.num_u(); }
+  /// Unknowns fixed by Dirichlet conditions (their rows read s·(y_i − ḡ_i(t)) = 0).
+  const std::vector<char>& constrained() const { return constrained_; }
+
+  /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
+  void residual(double t, const double* y, const double* ydot, double* F);
+  /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz).
+  void jacobian(double t, const double* y, const double* ydot, double cj, double* values);
+  /// The element kernel's output for element e at the global state (for tests).
+  void element(Index e, const double* y, const double* ydot, bool with_jacobian,
+               ElementOutput& out) const;
+
+  /// Sets the constrained entries of y to ḡ(t) and of ẏ to dḡ/dt (ẏ may be null).
+  void apply_dirichlet(double t, double* y, double* ydot) const;
+  /// Load-curve kinks of every boundary condition (sorted, unique) [s].
+  std::vector<double> breakpoints() const;
+  /// c_e = scale · h_e² / (4k) of element e (0 without GLS) [MPa s].
+  double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
+
+  AssemblyStats& stats() { return stats_; }
+
+ private:
+  struct Dirichlet {
+    Index dof;
+    double value;
+    const LoadCurve* curve;  ///< null = constant
+  };
+  struct NodalLoad {
+    std::vector<std::pair<Index, double>> entries;  ///< (row, amount) added to F
+    double value;
+    const LoadCurve* curve;
+  };
+  void gather(Index e, const double* y, const double* ydot, ElementVector& ye,
+              ElementVector& ydote) const;
+  double curve_value(const LoadCurve* c, double t) const { return c ? c->value(t) : 1.0; }
+
+  const Mesh& mesh_;
+  std::map<std::string, LoadCurve> curves_;
+  ElementParameters params_;
+  std::vector<std::vector<PointGeometry>> geometry_;
+  std::vector<double> gls_c_;
+  SparsityPattern pattern_;
+  std::vector<Dirichlet> dirichlet_;
+  std::vector<char> constrained_;
+  std::vector<NodalLoad> loads_;
+  double row_scale_u_ = 1.0;  ///< Dirichlet row scale on displacement rows [N/mm]
+  double row_scale_p_ = 1.0;  ///< Dirichlet row scale on pressure rows [mm³/(s MPa)]
+  AssemblyStats stats_;
+};
+
+}  // namespace biphasic

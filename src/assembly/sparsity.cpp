@@ -1,0 +1,92 @@
+#include "biphasic/assembly/sparsity.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace biphasic {
+
+SparsityPattern::SparsityPattern(const Mesh& mesh)
+    : num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      num_dofs_(3 * mesh.num_nodes() + mesh.num_vertices) {
+  // Node neighbourhoods through shared elements (each node is its own neighbour).
+  std::vector<std::vector<Index>> adj(num_nodes_);
+  for (const Tet10& t : mesh.tets)
+    for (Index a : t)
+      for (Index b : t) adj[a].push_back(b);
+  adj_ptr_.assign(num_nodes_ + 1, 0);
+  for (Index n = 0; n < num_nodes_; ++n) {
+    auto& list = adj[n];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    adj_ptr_[n + 1] = adj_ptr_[n] + static_cast<Index>(list.size());
+  }
+  adj_.reserve(adj_ptr_.back());
+  for (auto& list : adj) {
+    adj_.insert(adj_.end(), list.begin(), list.end());
+    std::vector<Index>().swap(list);
+  }
+
+  // Column of a node's unknowns: u rows of every neighbour, then p rows of neighbour vertices.
+  // Vertices are numbered first, so they are a prefix of each sorted neighbourhood.
+  auto column_length = [&](Index n) {
+    const Index deg = adj_ptr_[n + 1] - adj_ptr_[n];
+    const Index* begin = adj_.data() + adj_ptr_[n];
+    const Index nv = std::lower_bound(begin, begin + deg, num_vertices_) - begin;
+    return 3 * deg + nv;
+  };
+  colptr_.assign(num_dofs_ + 1, 0);
+  for (Index n = 0; n < num_nodes_; ++n)
+    for (int c = 0; c < 3; ++c) colptr_[3 * n + c + 1] = column_length(n);
+  for (Index v = 0; v < num_vertices_; ++v) colptr_[3 * num_nodes_ + v + 1] = column_length(v);
+  for (Index j = 0; j < num_dofs_; ++j) colptr_[j + 1] += colptr_[j];
+  rowind_.resize(colptr_.back());
+  auto fill_column = [&](Index col, Index n) {
+    Index pos = colptr_[col];
+    for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1]; ++q)
+      for (int c = 0; c < 3; ++c) rowind_[pos++] = 3 * adj_[q] + c;
+    for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1] && adj_[q] < num_vertices_; ++q)
+      rowind_[pos++] = 3 * num_nodes_ + adj_[q];
+  };
+  for (Index n = 0; n < num_nodes_; ++n)
+    for (int c = 0; c < 3; ++c) fill_column(3 * n + c, n);
+  for (Index v = 0; v < num_vertices_; ++v) fill_column(3 * num_nodes_ + v, v);
+
+  local_pos_.resize(mesh.tets.size());
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    const Tet10& t = mesh.tets[e];
+    for (int a = 0; a < 10; ++a) {
+      const Index* begin = adj_.data() + adj_ptr_[t[a]];
+      const Index* end = adj_.data() + adj_ptr_[t[a] + 1];
+      for (int b = 0; b < 10; ++b)
+        local_pos_[e][a * 10 + b] = static_cast<std::int32_t>(std::lower_bound(begin, end, t[b]) - begin);
+    }
+  }
+}
+
+Index SparsityPattern::find(Index row, Index col) const {
+  const Index* begin = rowind_.data() + colptr_[col];
+  const Index* end = rowind_.data() + colptr_[col + 1];
+  const Index* it = std::lower_bound(begin, end, row);
+  return (it != end && *it == row) ? it - rowind_.data() : -1;
+}
+
+void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatrix& M, double scale,
+                              const std::vector<char>& skip_row, double* values) const {
+  const auto& pos = local_pos_[element];
+  Index rows[kElementDofs];
+  for (int r = 0; r < kElementDofs; ++r) rows[r] = global_dof(tet, r);
+  for (int s = 0; s < kElementDofs; ++s) {
+    const int a = s < 30 ? s / 3 : s - 30;
+    const Index col = global_dof(tet, s);
+    const Index base = colptr_[col];
+    const Index deg = adj_ptr_[tet[a] + 1] - adj_ptr_[tet[a]];
+    for (int r = 0; r < kElementDofs; ++r) {
+      if (skip_row[rows[r]]) continue;
+      const Index offset = r < 30 ? 3 * pos[a * 10 + r / 3] + r % 3 : 3 * deg + pos[a * 10 + r - 30];
+      values[base + offset] += scale * M(r, s);
+    }
+  }
+}
+
+}  // namespace biphasic

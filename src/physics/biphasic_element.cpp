@@ -1,0 +1,92 @@
+#include "biphasic/physics/biphasic_element.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace biphasic {
+
+void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementParameters& params,
+                      const ElementVector& y, const ElementVector& ydot, bool with_jacobian,
+                      ElementOutput& out) {
+  using Mat10x3 = Eigen::Matrix<double, 10, 3>;
+  using Mat4x3 = Eigen::Matrix<double, 4, 3>;
+  const double mu = params.material.mu;
+  const double lambda = params.material.lambda;
+  const double k = params.permeability;
+  const double ce = params.gls_c;
+
+  // Nodal displacement and velocity as 10 × 3, pressure as 4-vector.
+  const Eigen::Map<const Eigen::Matrix<double, 3, 10>> u(y.data());
+  const Eigen::Map<const Eigen::Matrix<double, 3, 10>> v(ydot.data());
+  const Eigen::Vector4d p = y.tail<4>();
+
+  out.residual.setZero();
+  if (with_jacobian) {
+    out.dfdy.setZero();
+    out.dfdydot.setZero();
+  }
+
+  for (const PointGeometry& g : geometry) {
+    const Mat3 F = Mat3::Identity() + u * g.dN;  // F_iJ = δ_iJ + Σ_a u_ai ∂N_a/∂X_J
+    const Mat3 Fdot = v * g.dN;
+    const double J = checked_jacobian(F);
+    const Mat3 Finv = F.inverse();
+    const Mat3 FinvT = Finv.transpose();
+    const Mat10x3 b = g.dN * Finv;   // b_a = F⁻ᵀ∇₀N_a = ∇ₓN_a
+    const Mat4x3 e = g.dNp * Finv;   // e_c = ∇ₓN^p_c
+    const double pq = g.Np.dot(p);
+    const Vec3 gp = e.transpose() * p;  // ∇ₓp
+    const Mat3 L = Fdot * Finv;         // velocity gradient
+    const double divv = L.trace();
+    const double Jdot = J * divv;
+    const double beta = lambda * std::log(J) - mu - pq * J;
+    const Mat3 P = mu * F + beta * FinvT;  // P_eff − pJF⁻ᵀ
+    const double w = g.weight;
+
+    // Momentum (+ GLS) rows.
+    const Mat10x3 Ru = g.dN * P.transpose() + (ce * Jdot) * b;
+    for (int a = 0; a < 10; ++a)
+      for (int i = 0; i < 3; ++i) out.residual(3 * a + i) += w * Ru(a, i);
+    // Mass rows.
+    for (int c = 0; c < 4; ++c)
+      out.residual(30 + c) += w * (g.Np(c) * Jdot + k * J * e.row(c).dot(gp));
+
+    if (!with_jacobian) continue;
+
+    const Eigen::Matrix<double, 10, 10> G = g.dN * g.dN.transpose();
+    // ∂J̇/∂u_bk = J (div v · b_bk − (Lᵀ b_b)_k)
+    const Mat10x3 dJdot = J * (divv * b - b * L);  // (b L)_bk = Σ_m b_bm L_mk = (Lᵀ b_b)_k
+    const double cp = lambda - pq * J;
+
+    for (int a = 0; a < 10; ++a) {
+      for (int bn = 0; bn < 10; ++bn) {
+        for (int i = 0; i < 3; ++i) {
+          for (int kk = 0; kk < 3; ++kk) {
+            double kuu = cp * b(a, i) * b(bn, kk) - beta * b(bn, i) * b(a, kk);
+            if (i == kk) kuu += mu * G(a, bn);
+            kuu += ce * (-b(a, kk) * b(bn, i) * Jdot + b(a, i) * dJdot(bn, kk));
+            out.dfdy(3 * a + i, 3 * bn + kk) += w * kuu;
+            out.dfdydot(3 * a + i, 3 * bn + kk) += w * ce * J * b(a, i) * b(bn, kk);
+          }
+        }
+      }
+      for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < 3; ++i) out.dfdy(3 * a + i, 30 + c) -= w * g.Np(c) * J * b(a, i);
+    }
+    for (int c = 0; c < 4; ++c) {
+      const double ecgp = e.row(c).dot(gp);
+      for (int bn = 0; bn < 10; ++bn) {
+        const double bec = b.row(bn).dot(e.row(c));
+        const double bgp = b.row(bn).dot(gp);
+        for (int kk = 0; kk < 3; ++kk) {
+          const double flux = k * J * (b(bn, kk) * ecgp - gp(kk) * bec - e(c, kk) * bgp);
+          out.dfdy(30 + c, 3 * bn + kk) += w * (g.Np(c) * dJdot(bn, kk) + flux);
+          out.dfdydot(30 + c, 3 * bn + kk) += w * g.Np(c) * J * b(bn, kk);
+        }
+      }
+      for (int d = 0; d < 4; ++d) out.dfdy(30 + c, 30 + d) += w * k * J * e.row(c).dot(e.row(d));
+    }
+  }
+}
+
+}  // namespace biphasic

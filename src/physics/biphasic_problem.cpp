@@ -1,0 +1,292 @@
+#include "biphasic/physics/biphasic_problem.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "biphasic/fe/tet_geometry.hpp"
+#include "biphasic/physics/boundary_integrals.hpp"
+
+namespace biphasic {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Vec3 node_vec(const Mesh& mesh, Index n) {
+  return {mesh.nodes[n][0], mesh.nodes[n][1], mesh.nodes[n][2]};
+}
+
+TetCorners corners(const Mesh& mesh, const Tet10& t) {
+  return {node_vec(mesh, t[0]), node_vec(mesh, t[1]), node_vec(mesh, t[2]), node_vec(mesh, t[3])};
+}
+
+double element_length(const TetCorners& x, ElementLength choice) {
+  switch (choice) {
+    case ElementLength::Circumradius:
+      return tet_circumradius(x);
+    case ElementLength::ShortestEdge:
+      return tet_shortest_edge(x);
+    case ElementLength::LongestEdge:
+      return tet_longest_edge(x);
+    case ElementLength::VolumeDiameter:
+      return tet_volume_diameter(x);
+  }
+  return 0.0;
+}
+
+const char* bc_type_name(BcType t) {
+  switch (t) {
+    case BcType::Displacement:
+      return "displacement";
+    case BcType::Symmetry:
+      return "symmetry";
+    case BcType::Pressure:
+      return "pressure";
+    case BcType::Flux:
+      return "flux";
+    case BcType::Traction:
+      return "traction";
+    case BcType::NormalTraction:
+      return "normal_traction";
+  }
+  return "?";
+}
+
+std::string bc_label(std::size_t i, const BoundaryCondition& bc) {
+  return "boundary[" + std::to_string(i) + "] (" + bc_type_name(bc.type) + " on '" + bc.boundary +
+         "')";
+}
+
+/// Axis (0, 1, 2) normal to every face of a plane boundary; throws otherwise.
+int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
+  int axis = -1;
+  for (std::size_t f = 0; f < b.faces.size(); ++f) {
+    const Vec3 x0 = node_vec(mesh, b.faces[f][0]);
+    const Vec3 n =
+        (node_vec(mesh, b.faces[f][1]) - x0).cross(node_vec(mesh, b.faces[f][2]) - x0).normalized();
+    int best = 0;
+    n.cwiseAbs().maxCoeff(&best);
+    if (std::abs(n(best)) < 1.0 - 1e-8 || (axis >= 0 && best != axis)) {
+      std::ostringstream msg;
+      msg << label << ": symmetry needs a plane normal to x, y or z; face " << f << " has normal ("
+          << n(0) << ", " << n(1) << ", " << n(2) << ")";
+      throw std::runtime_error(msg.str());
+    }
+    axis = best;
+  }
+  return axis;
+}
+
+}  // namespace
+
+BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
+    : mesh_(mesh), curves_(config.curves), pattern_(mesh) {
+  params_.material = {config.material.lambda, config.material.mu};
+  params_.permeability = config.material.permeability;
+
+  // Reference geometry per element and quadrature point; GLS coefficients.
+  const QuadratureRule rule = tet_quadrature(config.quadrature_points);
+  geometry_.resize(mesh.tets.size());
+  const bool gls = config.stabilisation.type == Stabilisation::Gls;
+  if (gls) gls_c_.resize(mesh.tets.size());
+  double mean_length = 0.0;
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    Eigen::Matrix<double, 10, 3> X;
+    for (int a = 0; a < 10; ++a) X.row(a) = node_vec(mesh, mesh.tets[e][a]).transpose();
+    try {
+      element_point_geometry(X, rule, geometry_[e]);
+    } catch (const std::domain_error& err) {
+      throw std::runtime_error("element " + std::to_string(e) + ": " + err.what());
+    }
+    const TetCorners x = corners(mesh, mesh.tets[e]);
+    mean_length += tet_volume_diameter(x);
+    if (gls) {
+      const double h = element_length(x, config.stabilisation.length);
+      gls_c_[e] = config.stabilisation.scale * h * h / (4.0 * config.material.permeability);
+    }
+  }
+  mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
+  const double HA = config.material.lambda + 2.0 * config.material.mu;
+  row_scale_u_ = HA * mean_length;
+  row_scale_p_ = config.material.permeability * mean_length;
+
+  // Boundary conditions by physical-group name.
+  constrained_.assign(pattern_.size(), 0);
+  std::map<Index, std::size_t> owner;  // constrained dof → index of its boundary condition
+  auto constrain = [&](std::size_t i, Index dof, double value, const LoadCurve* curve) {
+    auto [it, inserted] = owner.emplace(dof, i);
+    if (!inserted) {
+      const Dirichlet& d = *std::find_if(dirichlet_.begin(), dirichlet_.end(),
+                                         [&](const Dirichlet& x) { return x.dof == dof; });
+      if (d.value == value && d.curve == curve) return;
+      throw std::runtime_error(bc_label(i, config.bcs[i]) + " conflicts with " +
+                               bc_label(it->second, config.bcs[it->second]) +
+                               " on the same unknown (dof " + std::to_string(dof) + ")");
+    }
+    dirichlet_.push_back({dof, value, curve});
+    constrained_[dof] = 1;
+  };
+  // Opposite corner of each boundary face's tetrahedron (built on first use) orients normals.
+  std::map<std::array<Index, 3>, Index> face_opposite;
+  auto opposite_vertex = [&](const Tri6& f) {
+    if (face_opposite.empty()) {
+      for (const Tet10& t : mesh.tets)
+        for (int skip = 0; skip < 4; ++skip) {
+          std::array<Index, 3> key{};
+          for (int a = 0, m = 0; a < 4; ++a)
+            if (a != skip) key[m++] = t[a];
+          std::sort(key.begin(), key.end());
+          face_opposite[key] = t[skip];
+        }
+    }
+    std::array<Index, 3> key{f[0], f[1], f[2]};
+    std::sort(key.begin(), key.end());
+    return face_opposite.at(key);
+  };
+  for (std::size_t i = 0; i < config.bcs.size(); ++i) {
+    const BoundaryCondition& bc = config.bcs[i];
+    const Boundary* b = mesh.find_boundary(bc.boundary);
+    if (!b) throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
+    const LoadCurve* curve = nullptr;
+    if (!bc.curve.empty()) {
+      auto it = curves_.find(bc.curve);
+      if (it == curves_.end())
+        throw std::runtime_error(bc_label(i, bc) + ": no load curve '" + bc.curve + "'");
+      curve = &it->second;
+    }
+    std::set<Index> nodes, vertices;
+    for (const Tri6& f : b->faces) {
+      nodes.insert(f.begin(), f.end());
+      vertices.insert(f.begin(), f.begin() + 3);
+    }
+    switch (bc.type) {
+      case BcType::Displacement:
+        for (Index n : nodes) constrain(i, pattern_.u_dof(n, bc.component), bc.value, curve);
+        break;
+      case BcType::Symmetry: {
+        const int axis = plane_axis(mesh, *b, bc_label(i, bc));
+        for (Index n : nodes) constrain(i, pattern_.u_dof(n, axis), 0.0, nullptr);
+        break;
+      }
+      case BcType::Pressure:
+        for (Index v : vertices) constrain(i, pattern_.p_dof(v), bc.value, curve);
+        break;
+      case BcType::Flux:
+      case BcType::Traction:
+      case BcType::NormalTraction: {
+        std::map<Index, double> load;
+        for (const Tri6& f : b->faces) {
+          Eigen::Matrix<double, 6, 3> X;
+          for (int a = 0; a < 6; ++a) X.row(a) = node_vec(mesh, f[a]).transpose();
+          if (bc.type == BcType::Flux) {
+            // R_p += ∫ g q̄ dA
+            const Eigen::Vector3d q = face_p1_integrals(X);
+            for (int c = 0; c < 3; ++c) load[pattern_.p_dof(f[c])] += q(c);
+          } else {
+            // R_u −= ∫ f · t̄ dA (nominal, dead load)
+            Eigen::Matrix<double, 6, 3> r;
+            if (bc.type == BcType::Traction) {
+              const Vec3 t(bc.vector[0], bc.vector[1], bc.vector[2]);
+              r = -face_p2_integrals(X) * t.transpose();
+            } else {
+              const Vec3 inward = node_vec(mesh, opposite_vertex(f)) - X.row(0).transpose();
+              r = -face_normal_integrals(X, inward);  // t̄ = −N, times value below
+            }
+            for (int a = 0; a < 6; ++a)
+              for (int c = 0; c < 3; ++c) load[pattern_.u_dof(f[a], c)] += r(a, c);
+          }
+        }
+        NodalLoad nl{{}, bc.type == BcType::Traction ? 1.0 : bc.value, curve};
+        nl.entries.assign(load.begin(), load.end());
+        loads_.push_back(std::move(nl));
+        break;
+      }
+    }
+  }
+}
+
+std::vector<double> BiphasicProblem::breakpoints() const {
+  std::set<double> t;
+  for (const auto& [name, c] : curves_)
+    for (double k : c.kinks()) t.insert(k);
+  return {t.begin(), t.end()};
+}
+
+void BiphasicProblem::apply_dirichlet(double t, double* y, double* ydot) const {
+  for (const Dirichlet& d : dirichlet_) {
+    y[d.dof] = d.value * curve_value(d.curve, t);
+    if (ydot) ydot[d.dof] = d.curve ? d.value * d.curve->slope(t) : 0.0;
+  }
+}
+
+void BiphasicProblem::gather(Index e, const double* y, const double* ydot, ElementVector& ye,
+                             ElementVector& ydote) const {
+  const Tet10& tet = mesh_.tets[e];
+  for (int s = 0; s < kElementDofs; ++s) {
+    const Index g = pattern_.global_dof(tet, s);
+    ye(s) = y[g];
+    ydote(s) = ydot[g];
+  }
+}
+
+void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool with_jacobian,
+                              ElementOutput& out) const {
+  ElementVector ye, ydote;
+  gather(e, y, ydot, ye, ydote);
+  ElementParameters p = params_;
+  p.gls_c = gls_coefficient(e);
+  try {
+    biphasic_element(geometry_[e], p, ye, ydote, with_jacobian, out);
+  } catch (const std::domain_error& err) {
+    throw InvertedElement("element " + std::to_string(e) + ": " + err.what());
+  }
+}
+
+void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
+  const auto t0 = Clock::now();
+  const Index n = size();
+  std::fill(F, F + n, 0.0);
+  ElementOutput out;
+  for (Index e = 0; e < static_cast<Index>(mesh_.tets.size()); ++e) {
+    element(e, y, ydot, false, out);
+    const Tet10& tet = mesh_.tets[e];
+    for (int s = 0; s < kElementDofs; ++s) F[pattern_.global_dof(tet, s)] += out.residual(s);
+  }
+  for (const NodalLoad& l : loads_) {
+    const double scale = l.value * curve_value(l.curve, t);
+    for (const auto& [row, amount] : l.entries) F[row] += scale * amount;
+  }
+  for (const Dirichlet& d : dirichlet_) {
+    const double s = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
+    F[d.dof] = s * (y[d.dof] - d.value * curve_value(d.curve, t));
+  }
+  ++stats_.residual_evaluations;
+  stats_.residual_seconds += seconds_since(t0);
+}
+
+void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot, double cj,
+                               double* values) {
+  const auto t0 = Clock::now();
+  std::fill(values, values + pattern_.nnz(), 0.0);
+  ElementOutput out;
+  for (Index e = 0; e < static_cast<Index>(mesh_.tets.size()); ++e) {
+    element(e, y, ydot, true, out);
+    out.dfdy += cj * out.dfdydot;
+    pattern_.scatter(e, mesh_.tets[e], out.dfdy, 1.0, constrained_, values);
+  }
+  for (const Dirichlet& d : dirichlet_)
+    values[pattern_.find(d.dof, d.dof)] = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
+  ++stats_.jacobian_evaluations;
+  stats_.jacobian_seconds += seconds_since(t0);
+}
+
+}  // namespace biphasic
