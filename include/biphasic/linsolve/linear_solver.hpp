@@ -1,0 +1,46 @@
+// Sparse direct linear solvers behind SUNDIALS' SUNLinearSolver interface, so that KINSOL
+// (backward Euler) and IDA (BDF) use them alike. Matrices are SUNSparseMatrix (CSC) with a
+// pattern fixed for the whole run: symbolic analysis is done once per solver.
+#pragma once
+
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+
+#include <memory>
+#include <string>
+
+#include "biphasic/io/config.hpp"
+
+namespace biphasic {
+
+/// Work done by a linear solver (accumulated over the run) [s].
+struct LinearSolverStats {
+  long analyses = 0;           ///< symbolic analyses (ordering)
+  long factorizations = 0;     ///< numeric factorisations, including refactorisations
+  long refactorizations = 0;   ///< of which reused the pivot order
+  long solves = 0;
+  double analysis_seconds = 0.0;
+  double factor_seconds = 0.0;
+  double solve_seconds = 0.0;
+  double fill = 0.0;           ///< nnz(L + U) / nnz(A) of the last factorisation
+};
+
+/// Deleter for SUNLinearSolver handles.
+struct LinearSolverDeleter {
+  void operator()(_generic_SUNLinearSolver* s) const;
+};
+using LinearSolverPtr = std::unique_ptr<_generic_SUNLinearSolver, LinearSolverDeleter>;
+
+/// The solver the configuration names. `stats` must outlive the solver.
+LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
+                                   LinearSolverStats* stats);
+
+/// KLU (SuiteSparse) with AMD, COLAMD or METIS nested-dissection ordering. Unlike SUNDIALS'
+/// SUNLinSol_KLU, re-initialisation by KINSol/IDAReInit keeps the symbolic analysis; the
+/// pivot order is reused (klu_refactor) until the pivot condition estimate degrades.
+LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+
+/// Name of an ordering as used in case files ("amd", "colamd", "metis").
+std::string ordering_name(Ordering o);
+
+}  // namespace biphasic

@@ -1,0 +1,233 @@
+#include "biphasic/time/backward_euler.hpp"
+
+#include <kinsol/kinsol.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace biphasic {
+
+namespace {
+
+std::string kinsol_reason(int flag) {
+  switch (flag) {
+    case KIN_MAXITER_REACHED:
+      return "Newton iteration limit reached";
+    case KIN_MXNEWT_5X_EXCEEDED:
+      return "five consecutive maximum-length Newton steps";
+    case KIN_LINESEARCH_NONCONV:
+      return "line search failed";
+    case KIN_LSETUP_FAIL:
+      return "factorisation failed (singular matrix?)";
+    case KIN_LSOLVE_FAIL:
+      return "linear solve failed";
+    case KIN_SYSFUNC_FAIL:
+    case KIN_REPTD_SYSFUNC_ERR:
+    case KIN_FIRST_SYSFUNC_ERR:
+      return "residual evaluation failed";
+    case KIN_LINSOLV_NO_RECOVERY:
+      return "linear solver could not recover";
+    default:
+      return "KINSOL flag " + std::to_string(flag);
+  }
+}
+
+}  // namespace
+
+struct BackwardEuler::Impl {
+  BiphasicProblem& problem;
+  TimeConfig time;
+  SUNContext ctx = nullptr;
+  void* kin = nullptr;
+  N_Vector y = nullptr, uscale = nullptr, fscale = nullptr;
+  SUNMatrix A = nullptr;
+  LinearSolverPtr ls;
+  std::vector<double> y_old, ydot, last_residual;
+  double t = 0.0, dt = 1.0;
+  std::string failure;  ///< message of a failed residual evaluation
+
+  Impl(BiphasicProblem& p, const TimeConfig& tc) : problem(p), time(tc) {}
+  ~Impl() {
+    if (kin) KINFree(&kin);
+    if (A) SUNMatDestroy(A);
+    ls.reset();
+    for (N_Vector v : {y, uscale, fscale})
+      if (v) N_VDestroy(v);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+
+  void rate(const double* yv) {
+    const Index n = problem.size();
+    for (Index i = 0; i < n; ++i) ydot[i] = (yv[i] - y_old[i]) / dt;
+  }
+
+  static int residual_fn(N_Vector yv, N_Vector fv, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    try {
+      self->rate(N_VGetArrayPointer(yv));
+      self->problem.residual(self->t, N_VGetArrayPointer(yv), self->ydot.data(),
+                             N_VGetArrayPointer(fv));
+      std::copy_n(N_VGetArrayPointer(fv), self->problem.size(), self->last_residual.data());
+      return 0;
+    } catch (const InvertedElement& e) {
+      self->failure = e.what();
+      return 1;  // recoverable: KINSOL may shorten the step
+    }
+  }
+
+  static int jacobian_fn(N_Vector yv, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(data);
+    const SparsityPattern& pat = self->problem.pattern();
+    // KINSOL zeroes the whole sparse matrix, index arrays included: restore the pattern.
+    std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(J));
+    std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(J));
+    try {
+      self->rate(N_VGetArrayPointer(yv));
+      self->problem.jacobian(self->t, N_VGetArrayPointer(yv), self->ydot.data(), 1.0 / self->dt,
+                             SUNSparseMatrix_Data(J));
+      return 0;
+    } catch (const InvertedElement& e) {
+      self->failure = e.what();
+      return 1;
+    }
+  }
+
+  /// ‖F‖_∞ over free momentum rows and over free mass rows.
+  std::pair<double, double> field_norms(const std::vector<double>& F) const {
+    double ru = 0.0, rp = 0.0;
+    const auto& fixed = problem.constrained();
+    for (Index i = 0; i < problem.size(); ++i) {
+      if (fixed[i]) continue;
+      (i < problem.num_u() ? ru : rp) = std::max(i < problem.num_u() ? ru : rp, std::abs(F[i]));
+    }
+    return {ru, rp};
+  }
+};
+
+BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
+                             const LinearSolverConfig& linear_solver)
+    : impl_(std::make_unique<Impl>(problem, time)) {
+  Impl& m = *impl_;
+  if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+  const Index n = problem.size();
+  const SparsityPattern& pat = problem.pattern();
+  m.y = N_VNew_Serial(n, m.ctx);
+  m.uscale = N_VNew_Serial(n, m.ctx);
+  m.fscale = N_VNew_Serial(n, m.ctx);
+  N_VConst(1.0, m.uscale);
+  m.A = SUNSparseMatrix(n, n, pat.nnz(), CSC_MAT, m.ctx);
+  m.ls = make_linear_solver(linear_solver, m.ctx, &ls_stats_);
+  m.y_old.assign(n, 0.0);
+  m.ydot.assign(n, 0.0);
+  m.last_residual.assign(n, 0.0);
+
+  m.kin = KINCreate(m.ctx);
+  auto check = [](int flag, const char* what) {
+    if (flag < 0) throw std::runtime_error(std::string("KINSOL set-up failed in ") + what);
+  };
+  check(KINInit(m.kin, Impl::residual_fn, m.y), "KINInit");
+  check(KINSetUserData(m.kin, &m), "KINSetUserData");
+  check(KINSetLinearSolver(m.kin, m.ls.get(), m.A), "KINSetLinearSolver");
+  check(KINSetJacFn(m.kin, Impl::jacobian_fn), "KINSetJacFn");
+  check(KINSetNumMaxIters(m.kin, time.newton.max_iterations), "KINSetNumMaxIters");
+  check(KINSetMaxSetupCalls(m.kin, time.newton.max_setup_calls), "KINSetMaxSetupCalls");
+  // The default maximum step (1000‖u₀‖, at least 1) would cut Newton steps from rest.
+  check(KINSetMaxNewtonStep(m.kin, 1e30), "KINSetMaxNewtonStep");
+  check(KINSetFuncNormTol(m.kin, 1.0), "KINSetFuncNormTol");  // per-field scales carry the tolerances
+  check(KINSetScaledStepTol(m.kin, 1e-15), "KINSetScaledStepTol");
+  check(KINSetPrintLevel(m.kin, std::getenv("BIPHASIC_KINSOL_PRINT") ? 3 : 0), "KINSetPrintLevel");
+  check(KINSetErrHandlerFn(
+            m.kin, [](int, const char*, const char*, char*, void*) {}, nullptr),
+        "KINSetErrHandlerFn");
+}
+
+BackwardEuler::~BackwardEuler() = default;
+
+void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
+  Impl& m = *impl_;
+  BiphasicProblem& problem = m.problem;
+  const NewtonConfig& newton = m.time.newton;
+  const Index n = problem.size();
+  const double t_end = m.time.t_end;
+  const int num_steps =
+      std::max(1, static_cast<int>(std::ceil((t_end - t0) / m.time.dt - 1e-9)));
+  double* yv = N_VGetArrayPointer(m.y);
+  double* fs = N_VGetArrayPointer(m.fscale);
+  std::vector<double> F(n);
+  bool have_factorisation = false;
+
+  double t = t0;
+  for (int step = 1; step <= num_steps; ++step) {
+    const double t_next = (step == num_steps) ? t_end : t0 + step * m.time.dt;
+    m.dt = t_next - t;
+    m.t = t_next;
+    m.y_old = y;
+    // Predictor: previous state with the new Dirichlet values.
+    std::copy(y.begin(), y.end(), yv);
+    problem.apply_dirichlet(t_next, yv, nullptr);
+
+    // Per-field residual scales: converged when ‖R_f‖ ≤ max(rtol_f ‖R_f(predictor)‖, atol_f).
+    m.rate(yv);
+    problem.residual(t_next, yv, m.ydot.data(), F.data());
+    const auto [ru0, rp0] = m.field_norms(F);
+    const double su = 1.0 / std::max(newton.rtol_displacement * ru0, newton.atol_displacement);
+    const double sp = 1.0 / std::max(newton.rtol_pressure * rp0, newton.atol_pressure);
+    for (Index i = 0; i < n; ++i) fs[i] = i < problem.num_u() ? su : sp;
+
+    const long jac_before = problem.stats().jacobian_evaluations;
+    int flag = 0;
+    long iterations = 0;
+    // Attempts: (1) reuse the factorisation (modified Newton); (2) fresh Jacobian every
+    // iteration; (3) full Newton with a line search. Each restarts from the predictor.
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      const bool reuse = attempt == 0 && have_factorisation && newton.reuse_across_steps;
+      if (attempt == 0 && !reuse && newton.max_setup_calls == 1) continue;  // same as (2)
+      KINSetNoInitSetup(m.kin, reuse ? SUNTRUE : SUNFALSE);
+      KINSetMaxSetupCalls(m.kin, attempt == 0 ? newton.max_setup_calls : 1);
+      if (attempt > 0) {
+        std::copy(y.begin(), y.end(), yv);
+        problem.apply_dirichlet(t_next, yv, nullptr);
+      }
+      m.failure.clear();
+      flag = KINSol(m.kin, m.y, attempt == 2 ? KIN_LINESEARCH : KIN_NONE, m.uscale, m.fscale);
+      long nni = 0;
+      KINGetNumNonlinSolvIters(m.kin, &nni);
+      iterations += nni;
+      if (flag >= 0) break;
+      ++stats_.nonlinear_failures;
+    }
+    if (flag < 0) {
+      const auto [ru, rp] = m.field_norms(m.last_residual);
+      std::ostringstream msg;
+      msg << "backward Euler step " << step << " (t = " << t_next << " s, dt = " << m.dt
+          << " s) failed: " << kinsol_reason(flag);
+      if (!m.failure.empty()) msg << " (" << m.failure << ")";
+      msg << "; last residual |R_u| = " << ru << " N, |R_p| = " << rp << " mm^3/s";
+      throw StepFailure(msg.str());
+    }
+    have_factorisation = true;
+    std::copy(yv, yv + n, y.begin());
+    t = t_next;
+
+    StepInfo info;
+    info.step = step;
+    info.t = t;
+    info.dt = m.dt;
+    info.newton_iterations = static_cast<int>(iterations);
+    info.setups = static_cast<int>(problem.stats().jacobian_evaluations - jac_before);
+    std::tie(info.residual_u, info.residual_p) = m.field_norms(m.last_residual);
+    ++stats_.steps;
+    stats_.newton_iterations += iterations;
+    if (observer) observer(info, y);
+  }
+  stats_.jacobian_evaluations = problem.stats().jacobian_evaluations;
+  stats_.residual_evaluations = problem.stats().residual_evaluations;
+}
+
+}  // namespace biphasic
