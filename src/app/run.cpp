@@ -1,1 +1,238 @@
+#include "biphasic/app/run.hpp"
 
+#include <SuiteSparse_config.h>
+#include <gmsh.h>
+#include <hdf5.h>
+#include <klu.h>
+#include <metis.h>
+#include <sundials/sundials_config.h>
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "biphasic/io/case_file.hpp"
+#include "biphasic/io/field_writer.hpp"
+#include "biphasic/io/line_probe.hpp"
+#include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/study/measures.hpp"
+#include "biphasic/time/backward_euler.hpp"
+
+namespace biphasic {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Writes JSON to a temporary file and renames it, so a reader never sees half a file.
+void write_json_atomically(const fs::path& path, const nlohmann::json& j) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    out << j.dump(2) << '\n';
+  }
+  fs::rename(tmp, path);
+}
+
+Mesh build_mesh(const Config& config, const fs::path& output_dir) {
+  if (config.mesh.source == MeshSource::File) return read_gmsh(config.mesh.file);
+  QuarterCylinderSpec spec = config.mesh.cylinder;
+  if (!spec.write_msh.empty() && fs::path(spec.write_msh).is_relative())
+    spec.write_msh = (output_dir / spec.write_msh).string();
+  return generate_quarter_cylinder(spec);
+}
+
+nlohmann::json measures_json(const LineMeasures& m) {
+  nlohmann::json j{{"p_mid", m.p_mid}, {"p_max", m.p_max}, {"p_min", m.p_min}};
+  j["overshoot"] = m.defined ? nlohmann::json(m.overshoot) : nlohmann::json(nullptr);
+  j["undershoot"] = m.defined ? nlohmann::json(m.undershoot) : nlohmann::json(nullptr);
+  return j;
+}
+
+}  // namespace
+
+std::string dependency_versions() {
+  std::ostringstream s;
+  s << "SUNDIALS " << SUNDIALS_VERSION << ", SuiteSparse " << SUITESPARSE_MAIN_VERSION << '.'
+    << SUITESPARSE_SUB_VERSION << '.' << SUITESPARSE_SUBSUB_VERSION << " (KLU " << KLU_MAIN_VERSION
+    << '.' << KLU_SUB_VERSION << '.' << KLU_SUBSUB_VERSION << "), METIS " << METIS_VER_MAJOR << '.'
+    << METIS_VER_MINOR << '.' << METIS_VER_SUBMINOR << ", gmsh " << GMSH_API_VERSION << ", HDF5 "
+    << H5_VERS_MAJOR << '.' << H5_VERS_MINOR << '.' << H5_VERS_RELEASE << ", Eigen "
+    << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.' << EIGEN_MINOR_VERSION
+    << ", toml++ " << TOML_LIB_MAJOR << '.' << TOML_LIB_MINOR << '.' << TOML_LIB_PATCH;
+  return s.str();
+}
+
+nlohmann::json run_case(const Config& config, const RunOptions& options) {
+  const auto wall0 = Clock::now();
+  const fs::path out_dir(options.output_dir);
+  fs::create_directories(out_dir);
+  std::ostream& log = std::cout;
+  auto say = [&](const std::string& line) {
+    if (!options.quiet) log << line << std::endl;
+  };
+
+  nlohmann::json summary;
+  summary["status"] = "running";
+  summary["case_file"] = config.case_file;
+  summary["version"] = BIPHASIC_VERSION;
+  summary["dependencies"] = dependency_versions();
+  summary["configuration"] = config_to_json(config);
+  const fs::path summary_path = out_dir / "summary.json";
+  write_json_atomically(summary_path, summary);
+
+  say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
+      (config.title.empty() ? config.case_file : config.title));
+  auto t0 = Clock::now();
+  const Mesh mesh = build_mesh(config, out_dir);
+  const double mesh_seconds = seconds_since(t0);
+  check_boundaries(config, mesh.boundary_names());
+
+  t0 = Clock::now();
+  BiphasicProblem problem(mesh, config);
+  BackwardEuler integrator(problem, config.time, config.linear_solver);
+  const double setup_seconds = seconds_since(t0);
+  summary["mesh"] = {{"nodes", mesh.num_nodes()},
+                     {"vertices", mesh.num_vertices},
+                     {"tetrahedra", mesh.tets.size()},
+                     {"unknowns", problem.size()},
+                     {"displacement_unknowns", problem.num_u()},
+                     {"pressure_unknowns", problem.size() - problem.num_u()},
+                     {"jacobian_nonzeros", problem.pattern().nnz()}};
+  {
+    std::ostringstream s;
+    s << "mesh: " << mesh.num_nodes() << " nodes (" << mesh.num_vertices << " vertices), "
+      << mesh.tets.size() << " tetrahedra, " << problem.size() << " unknowns, "
+      << problem.pattern().nnz() << " Jacobian nonzeros (" << mesh_seconds << " s)";
+    say(s.str());
+  }
+
+  // Observers: probe line, fields, per-step records.
+  const Point a = config.output.line_start, b = config.output.line_end;
+  const double diag = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  const LineProbe probe(mesh, a, b, 1e-6 * std::max(diag, 1.0));
+  std::unique_ptr<LineCsvWriter> line_csv;
+  if (config.output.line) line_csv = std::make_unique<LineCsvWriter>((out_dir / "line.csv").string());
+  std::unique_ptr<FieldWriter> fields;
+  if (config.output.fields) fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  summary["line"] = {{"start", a}, {"end", b}, {"nodes", probe.size()}};
+  summary["steps"] = nlohmann::json::array();
+  summary["outputs"] = nlohmann::json::array();
+
+  std::vector<double> u, p;
+  auto split = [&](const std::vector<double>& y) {
+    u.assign(y.begin(), y.begin() + problem.num_u());
+    p.assign(y.begin() + problem.num_u(), y.end());
+  };
+  auto write_output = [&](double t, const std::vector<double>& y) {
+    split(y);
+    if (line_csv) line_csv->write(t, probe, u, p);
+    if (fields) fields->write(t, u, p);
+    const LineMeasures m = line_measures(probe.s(), probe.pressure(p));
+    nlohmann::json o = measures_json(m);
+    o["t"] = t;
+    summary["outputs"].push_back(o);
+    return m;
+  };
+
+  auto record_counters = [&](double wall) {
+    const AssemblyStats& as = problem.stats();
+    const LinearSolverStats& ls = integrator.linear_solver_stats();
+    const IntegratorStats& is = integrator.stats();
+    summary["counters"] = {{"steps", is.steps},
+                           {"newton_iterations", is.newton_iterations},
+                           {"nonlinear_failures", is.nonlinear_failures},
+                           {"residual_evaluations", as.residual_evaluations},
+                           {"jacobian_evaluations", as.jacobian_evaluations},
+                           {"symbolic_analyses", ls.analyses},
+                           {"factorizations", ls.factorizations},
+                           {"refactorizations", ls.refactorizations},
+                           {"linear_solves", ls.solves},
+                           {"fill_ratio", ls.fill}};
+    const double assembly = as.residual_seconds + as.jacobian_seconds;
+    const double linear = ls.analysis_seconds + ls.factor_seconds + ls.solve_seconds;
+    summary["timings"] = {{"wall", wall},
+                          {"mesh", mesh_seconds},
+                          {"setup", setup_seconds},
+                          {"residual_assembly", as.residual_seconds},
+                          {"jacobian_assembly", as.jacobian_seconds},
+                          {"symbolic_analysis", ls.analysis_seconds},
+                          {"factorization", ls.factor_seconds},
+                          {"linear_solve", ls.solve_seconds},
+                          {"other", wall - mesh_seconds - setup_seconds - assembly - linear}};
+  };
+
+  std::vector<double> y(problem.size(), 0.0);
+  const double t_start = 0.0;
+  problem.apply_dirichlet(t_start, y.data(), nullptr);
+  write_output(t_start, y);
+  const int every = std::max(1, config.output.every);
+  const int planned = std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
+
+  auto observer = [&](const StepInfo& info, const std::vector<double>& ys) {
+    nlohmann::json rec{{"step", info.step},
+                       {"t", info.t},
+                       {"dt", info.dt},
+                       {"newton_iterations", info.newton_iterations},
+                       {"jacobian_evaluations", info.setups},
+                       {"residual_u", info.residual_u},
+                       {"residual_p", info.residual_p}};
+    const bool output_now = info.step % every == 0 || info.step == planned;
+    std::string mid;
+    if (output_now) {
+      const LineMeasures m = write_output(info.t, ys);
+      rec["p_mid"] = m.p_mid;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f", m.p_mid,
+                    m.defined ? m.overshoot : 0.0);
+      mid = buf;
+    }
+    summary["steps"].push_back(rec);
+    record_counters(seconds_since(wall0));
+    write_json_atomically(summary_path, summary);
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
+                  "|R_p| %.2e mm3/s",
+                  info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
+                  info.residual_u, info.residual_p);
+    say(line + mid);
+  };
+
+  try {
+    integrator.run(t_start, y, observer);
+  } catch (const std::exception& e) {
+    summary["status"] = "failed";
+    summary["error"] = e.what();
+    record_counters(seconds_since(wall0));
+    write_json_atomically(summary_path, summary);
+    throw;
+  }
+  summary["status"] = "completed";
+  record_counters(seconds_since(wall0));
+  write_json_atomically(summary_path, summary);
+  {
+    const auto& c = summary["counters"];
+    std::ostringstream s;
+    s << "done: " << c["steps"] << " steps, " << c["newton_iterations"] << " Newton iterations, "
+      << c["residual_evaluations"] << " residuals, " << c["jacobian_evaluations"]
+      << " Jacobians, " << c["factorizations"] << " factorisations; wall "
+      << summary["timings"]["wall"].get<double>() << " s; output in " << out_dir.string();
+    say(s.str());
+  }
+  return summary;
+}
+
+}  // namespace biphasic
