@@ -46,4 +46,29 @@ struct Mesh {
   std::vector<std::string> boundary_names() const;
 };
 
+/// Signed volume [mm³] of the straight tetrahedron (a, b, c, d): positive when
+/// (b − a, c − a, d − a) is a right-handed triple.
+double tet_signed_volume(const Point& a, const Point& b, const Point& c, const Point& d);
+
+/// Signed volume [mm³] of tetrahedron `t` of `mesh` computed from its four corners.
+double tet_signed_volume(const Mesh& mesh, Index t);
+
+/// Gives every tetrahedron a positive volume in the local order above: where the corner
+/// volume is negative, swaps local vertices 1 and 2 together with edge nodes 4↔6 and 8↔9.
+/// Throws std::runtime_error naming the tetrahedron index and its volume if it is
+/// degenerate (|volume| ≤ 1e-12 · longest edge³).
+void orient_tets(Mesh& mesh);
+
+/// Orients every boundary face so that its normal (right-hand rule on corners 0, 1, 2)
+/// points out of a tetrahedron having that face; swaps corners 1 and 2 and edge nodes
+/// 3↔5 where needed. Node indices must be in range. Throws std::runtime_error naming the
+/// boundary and the face if a face belongs to no tetrahedron.
+void orient_boundary_faces(Mesh& mesh);
+
+/// Checks every Mesh invariant: indices in range, corners < num_vertices ≤ edge nodes, every
+/// vertex is a corner of some tet, one edge node per vertex pair shared by all tets and
+/// boundary faces using that edge, boundary corners are vertices, positive tet volumes.
+/// Throws std::runtime_error describing the first violation found.
+void check_mesh(const Mesh& mesh);
+
 }  // namespace biphasic
