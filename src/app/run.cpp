@@ -7,6 +7,7 @@
 #include <metis.h>
 #include <sundials/sundials_config.h>
 
+#include <toml++/toml.h>
 #include <Eigen/Core>
 #include <chrono>
 #include <cstdio>
@@ -14,7 +15,6 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
@@ -124,9 +124,11 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const double diag = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
   const LineProbe probe(mesh, a, b, 1e-6 * std::max(diag, 1.0));
   std::unique_ptr<LineCsvWriter> line_csv;
-  if (config.output.line) line_csv = std::make_unique<LineCsvWriter>((out_dir / "line.csv").string());
+  if (config.output.line)
+    line_csv = std::make_unique<LineCsvWriter>((out_dir / "line.csv").string());
   std::unique_ptr<FieldWriter> fields;
-  if (config.output.fields) fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  if (config.output.fields)
+    fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
   summary["line"] = {{"start", a}, {"end", b}, {"nodes", probe.size()}};
   summary["steps"] = nlohmann::json::array();
   summary["outputs"] = nlohmann::json::array();
@@ -179,7 +181,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   problem.apply_dirichlet(t_start, y.data(), nullptr);
   write_output(t_start, y);
   const int every = std::max(1, config.output.every);
-  const int planned = std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
+  const int planned =
+      std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
 
   auto observer = [&](const StepInfo& info, const std::vector<double>& ys) {
     nlohmann::json rec{{"step", info.step},
@@ -227,9 +230,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const auto& c = summary["counters"];
     std::ostringstream s;
     s << "done: " << c["steps"] << " steps, " << c["newton_iterations"] << " Newton iterations, "
-      << c["residual_evaluations"] << " residuals, " << c["jacobian_evaluations"]
-      << " Jacobians, " << c["factorizations"] << " factorisations; wall "
-      << summary["timings"]["wall"].get<double>() << " s; output in " << out_dir.string();
+      << c["residual_evaluations"] << " residuals, " << c["jacobian_evaluations"] << " Jacobians, "
+      << c["factorizations"] << " factorisations; wall " << summary["timings"]["wall"].get<double>()
+      << " s; output in " << out_dir.string();
     say(s.str());
   }
   return summary;

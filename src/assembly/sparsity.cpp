@@ -59,7 +59,8 @@ SparsityPattern::SparsityPattern(const Mesh& mesh)
       const Index* begin = adj_.data() + adj_ptr_[t[a]];
       const Index* end = adj_.data() + adj_ptr_[t[a] + 1];
       for (int b = 0; b < 10; ++b)
-        local_pos_[e][a * 10 + b] = static_cast<std::int32_t>(std::lower_bound(begin, end, t[b]) - begin);
+        local_pos_[e][a * 10 + b] =
+            static_cast<std::int32_t>(std::lower_bound(begin, end, t[b]) - begin);
     }
   }
 }
@@ -83,7 +84,8 @@ void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatr
     const Index deg = adj_ptr_[tet[a] + 1] - adj_ptr_[tet[a]];
     for (int r = 0; r < kElementDofs; ++r) {
       if (skip_row[rows[r]]) continue;
-      const Index offset = r < 30 ? 3 * pos[a * 10 + r / 3] + r % 3 : 3 * deg + pos[a * 10 + r - 30];
+      const Index offset =
+          r < 30 ? 3 * pos[a * 10 + r / 3] + r % 3 : 3 * deg + pos[a * 10 + r - 30];
       values[base + offset] += scale * M(r, s);
     }
   }

@@ -1,8 +1,8 @@
 // KLU as a SUNLinearSolver: analysis once, klu_refactor while the pivot order stays good.
 #include <klu.h>
 #include <metis.h>
-#include <sunmatrix/sunmatrix_sparse.h>
 #include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
 #include <chrono>
@@ -105,7 +105,8 @@ int klu_setup(SUNLinearSolver S, SUNMatrix A) {
   ++c->stats->factorizations;
   if (!c->numeric) return set_flag(c, SUNLS_LUFACT_FAIL);
   const double nnzA = static_cast<double>(Ap[n]);
-  c->stats->fill = static_cast<double>(c->numeric->lnz + c->numeric->unz + c->numeric->nzoff) / nnzA;
+  c->stats->fill =
+      static_cast<double>(c->numeric->lnz + c->numeric->unz + c->numeric->nzoff) / nnzA;
   return set_flag(c, SUNLS_SUCCESS);
 }
 

@@ -32,7 +32,8 @@ Mat3 NeoHookean::tangent_apply(const Mat3& F, const Mat3& H) const {
   const Mat3 FinvT = F.inverse().transpose();
   const Tangent t = tangent(J);
   // Σ_kL A_iJkL H_kL = c₁ H_iJ + c₂ (F⁻ᵀ:H) F⁻ᵀ_iJ − c₃ (F⁻ᵀ Hᵀ F⁻ᵀ)_iJ
-  return t.c1 * H + t.c2 * (FinvT.cwiseProduct(H).sum()) * FinvT - t.c3 * FinvT * H.transpose() * FinvT;
+  return t.c1 * H + t.c2 * (FinvT.cwiseProduct(H).sum()) * FinvT -
+         t.c3 * FinvT * H.transpose() * FinvT;
 }
 
 }  // namespace biphasic

@@ -32,8 +32,8 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
     const double J = checked_jacobian(F);
     const Mat3 Finv = F.inverse();
     const Mat3 FinvT = Finv.transpose();
-    const Mat10x3 b = g.dN * Finv;   // b_a = F⁻ᵀ∇₀N_a = ∇ₓN_a
-    const Mat4x3 e = g.dNp * Finv;   // e_c = ∇ₓN^p_c
+    const Mat10x3 b = g.dN * Finv;  // b_a = F⁻ᵀ∇₀N_a = ∇ₓN_a
+    const Mat4x3 e = g.dNp * Finv;  // e_c = ∇ₓN^p_c
     const double pq = g.Np.dot(p);
     const Vec3 gp = e.transpose() * p;  // ∇ₓp
     const Mat3 L = Fdot * Finv;         // velocity gradient

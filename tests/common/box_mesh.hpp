@@ -14,7 +14,9 @@ namespace biphasic::test {
 
 inline Mesh box_mesh(std::array<int, 3> cells, std::array<double, 3> size) {
   const int nx = cells[0], ny = cells[1], nz = cells[2];
-  auto vid = [&](int i, int j, int k) -> Index { return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i; };
+  auto vid = [&](int i, int j, int k) -> Index {
+    return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i;
+  };
   std::vector<Point> vertices;
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)

@@ -28,9 +28,9 @@ double complete_homogeneous(const std::array<double, 4>& a, int d) {
   return sum;
 }
 
-const Eigen::Matrix<double, 4, 3> kCorners = (Eigen::Matrix<double, 4, 3>() << 0.2, -0.1, 0.3,
-                                              1.7, 0.2, -0.2, 0.4, 1.3, 0.1, -0.3, 0.5, 1.1)
-                                                 .finished();
+const Eigen::Matrix<double, 4, 3> kCorners =
+    (Eigen::Matrix<double, 4, 3>() << 0.2, -0.1, 0.3, 1.7, 0.2, -0.2, 0.4, 1.3, 0.1, -0.3, 0.5, 1.1)
+        .finished();
 
 double integrate(const QuadratureRule& rule, const std::function<double(const Vec3&)>& f) {
   const Mat3 A = (Mat3() << (kCorners.row(1) - kCorners.row(0)).transpose(),

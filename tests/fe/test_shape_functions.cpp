@@ -12,8 +12,7 @@ std::array<std::array<double, 3>, 10> reference_nodes() {
   std::array<std::array<double, 3>, 10> x{};
   for (int a = 0; a < 4; ++a) x[a] = v[a];
   for (int e = 0; e < 6; ++e)
-    for (int c = 0; c < 3; ++c)
-      x[4 + e][c] = 0.5 * (v[kTetEdges[e][0]][c] + v[kTetEdges[e][1]][c]);
+    for (int c = 0; c < 3; ++c) x[4 + e][c] = 0.5 * (v[kTetEdges[e][0]][c] + v[kTetEdges[e][1]][c]);
   return x;
 }
 

@@ -15,8 +15,7 @@ inline Eigen::Matrix<double, 10, 3> distorted_tet() {
   Eigen::Matrix<double, 10, 3> X;
   X.topRows<4>() = V;
   const int edges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
-  for (int e = 0; e < 6; ++e)
-    X.row(4 + e) = 0.5 * (V.row(edges[e][0]) + V.row(edges[e][1]));
+  for (int e = 0; e < 6; ++e) X.row(4 + e) = 0.5 * (V.row(edges[e][0]) + V.row(edges[e][1]));
   X(5, 2) += 0.03;  // curve one edge
   X(8, 0) -= 0.02;
   return X;

@@ -14,8 +14,8 @@ struct Block {
   const char* name;
   int r0, nr, c0, nc;
 };
-const Block kBlocks[] = {{"u-u", 0, 30, 0, 30}, {"u-p", 0, 30, 30, 4}, {"p-u", 30, 4, 0, 30},
-                         {"p-p", 30, 4, 30, 4}};
+const Block kBlocks[] = {
+    {"u-u", 0, 30, 0, 30}, {"u-p", 0, 30, 30, 4}, {"p-u", 30, 4, 0, 30}, {"p-p", 30, 4, 30, 4}};
 
 /// Central-difference Jacobian of the residual with respect to y (wrt_rate = false) or ẏ.
 ElementMatrix central_difference(const std::vector<PointGeometry>& geo, const ElementParameters& p,

@@ -4,11 +4,11 @@
 
 #include <Eigen/Dense>
 
+#include "../common/box_mesh.hpp"
 #include "biphasic/fe/quadrature.hpp"
 #include "biphasic/fe/tet_geometry.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "element_fixture.hpp"
-#include "../common/box_mesh.hpp"
 
 namespace biphasic {
 namespace {

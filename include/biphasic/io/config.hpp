@@ -16,8 +16,10 @@ namespace biphasic {
 struct LoadCurve {
   std::vector<std::pair<double, double>> points;
   double value(double t) const;
-  double slope(double t) const;  ///< right derivative d value/dt [1/s]
-  std::vector<double> kinks() const;  ///< times of interior points (breakpoints)
+  double slope(double t) const;       ///< right derivative d value/dt [1/s]
+  /// Times where the slope changes (breakpoints), counting the constant extrapolation: for
+  /// [[0,0],[32,1]] this is {0, 32}; a point inside a straight stretch is not a kink.
+  std::vector<double> kinks() const;
 };
 
 enum class MeshSource { QuarterCylinder, File };
@@ -29,9 +31,9 @@ struct MeshConfig {
 };
 
 struct MaterialConfig {
-  double lambda = 0.2;          ///< Lamé λ [MPa]
-  double mu = 0.5;              ///< shear modulus μ [MPa]
-  double permeability = 1e-3;   ///< k [mm⁴ N⁻¹ s⁻¹]
+  double lambda = 0.2;         ///< Lamé λ [MPa]
+  double mu = 0.5;             ///< shear modulus μ [MPa]
+  double permeability = 1e-3;  ///< k [mm⁴ N⁻¹ s⁻¹]
 };
 
 enum class BcType {
@@ -45,11 +47,11 @@ enum class BcType {
 
 struct BoundaryCondition {
   BcType type = BcType::Displacement;
-  std::string boundary;              ///< physical-group name
-  int component = 0;                 ///< 0,1,2 = x,y,z (displacement only)
-  double value = 0.0;                ///< scale of the curve (units by type)
-  std::array<double, 3> vector{};    ///< traction vector [MPa] (traction only)
-  std::string curve;                 ///< load-curve name; empty = constant 1
+  std::string boundary;            ///< physical-group name
+  int component = 0;               ///< 0,1,2 = x,y,z (displacement only)
+  double value = 0.0;              ///< scale of the curve (units by type)
+  std::array<double, 3> vector{};  ///< traction vector [MPa] (traction only)
+  std::string curve;               ///< load-curve name; empty = constant 1
 };
 
 enum class Stabilisation { None, Gls };
@@ -94,13 +96,13 @@ struct LinearSolverConfig {
 struct OutputConfig {
   std::array<double, 3> line_start{0.0, 0.0, 0.0};  ///< probe line [mm]
   std::array<double, 3> line_end{0.0, 0.0, 8.0};
-  int every = 1;          ///< write outputs every n steps (and always the last)
-  bool fields = true;     ///< HDF5/XDMF fields
-  bool line = true;       ///< line CSV
+  int every = 1;       ///< write outputs every n steps (and always the last)
+  bool fields = true;  ///< HDF5/XDMF fields
+  bool line = true;    ///< line CSV
 };
 
 struct Config {
-  std::string case_file;   ///< path of the case file read
+  std::string case_file;  ///< path of the case file read
   std::string title;
   MeshConfig mesh;
   MaterialConfig material;

@@ -15,14 +15,14 @@ namespace biphasic {
 
 /// Work done by a linear solver (accumulated over the run) [s].
 struct LinearSolverStats {
-  long analyses = 0;           ///< symbolic analyses (ordering)
-  long factorizations = 0;     ///< numeric factorisations, including refactorisations
-  long refactorizations = 0;   ///< of which reused the pivot order
+  long analyses = 0;          ///< symbolic analyses (ordering)
+  long factorizations = 0;    ///< numeric factorisations, including refactorisations
+  long refactorizations = 0;  ///< of which reused the pivot order
   long solves = 0;
   double analysis_seconds = 0.0;
   double factor_seconds = 0.0;
   double solve_seconds = 0.0;
-  double fill = 0.0;           ///< nnz(L + U) / nnz(A) of the last factorisation
+  double fill = 0.0;  ///< nnz(L + U) / nnz(A) of the last factorisation
 };
 
 /// Deleter for SUNLinearSolver handles.

@@ -20,7 +20,7 @@ using ElementMatrix = Eigen::Matrix<double, kElementDofs, kElementDofs>;
 struct ElementParameters {
   NeoHookean material;
   double permeability = 1e-3;  ///< k [mm⁴ N⁻¹ s⁻¹]
-  double gls_c = 0.0;          ///< c_e = h²/(4k) of the semidiscrete GLS term [mm² · N s mm⁻⁴ = MPa s]
+  double gls_c = 0.0;  ///< c_e = h²/(4k) of the semidiscrete GLS term [mm² · N s mm⁻⁴ = MPa s]
 };
 
 /// Local state: y = (u₀ₓ, u₀ᵧ, u₀𝓏, …, u₉𝓏, p₀, …, p₃) and its rate ẏ.

@@ -10,9 +10,9 @@ namespace biphasic {
 
 /// One accepted step, as printed on the terminal and passed to observers.
 struct StepInfo {
-  int step = 0;             ///< 1-based
-  double t = 0.0;           ///< end of the step [s]
-  double dt = 0.0;          ///< [s]
+  int step = 0;     ///< 1-based
+  double t = 0.0;   ///< end of the step [s]
+  double dt = 0.0;  ///< [s]
   int newton_iterations = 0;
   int setups = 0;           ///< Jacobian evaluations + factorisations in this step
   double residual_u = 0.0;  ///< ‖R_u‖_∞ over free momentum rows at the solution [N]

@@ -1,0 +1,116 @@
+// The command line: help, version, and bad case files rejected with their messages and a
+// non-zero exit before any work starts.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status;
+  std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
+  Result r{-1, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+fs::path write_case(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / ("biphasic_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kValid = R"(format_version = 1
+[mesh]
+lc = 4.0
+[[boundary]]
+name = "bottom"
+type = "displacement"
+component = "z"
+value = 0.0
+)";
+
+TEST(Cli, HelpAndVersion) {
+  const Result help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.output.find("biphasic run CASE.toml"), std::string::npos);
+  const Result version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  for (const char* lib : {"SUNDIALS 6.4", "SuiteSparse", "gmsh", "HDF5", "Eigen 3.4"})
+    EXPECT_NE(version.output.find(lib), std::string::npos) << lib;
+}
+
+TEST(Cli, BadInputIsReportedWithFileKeyAndValue) {
+  struct Case {
+    const char* name;
+    std::string text;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Case> cases = {
+      {"syntax.toml", "format_version = 1\n[mesh\n", {"syntax.toml", "TOML"}},
+      {"unknown.toml", std::string(kValid) + "[time]\ndtt = 1.0\n", {"time.dtt", "time.dt"}},
+      {"type.toml", std::string(kValid) + "[time]\ndt = \"fast\"\n", {"time.dt", "fast"}},
+      {"range.toml", std::string(kValid) + "[material]\nmu = -0.5\n", {"material.mu", "-0.5"}},
+      {"choice.toml",
+       std::string(kValid) + "[stabilisation]\ntype = \"glss\"\n",
+       {"stabilisation.type", "glss"}},
+      {"curve.toml", std::string(kValid) + "curve = \"rampp\"\n", {"boundary[0].curve", "rampp"}},
+  };
+  for (const Case& c : cases) {
+    const fs::path file = write_case(c.name, c.text);
+    const Result r = run("run " + file.string() + " -o " + (file.parent_path() / "out").string());
+    EXPECT_EQ(r.status, 1) << c.name << ":\n" << r.output;
+    for (const std::string& e : c.expected)
+      EXPECT_NE(r.output.find(e), std::string::npos) << c.name << " lacks '" << e << "':\n"
+                                                     << r.output;
+    EXPECT_EQ(r.output.find("mesh:"), std::string::npos) << "work started for " << c.name;
+  }
+}
+
+TEST(Cli, UnknownBoundaryNameListsTheMeshBoundaries) {
+  const fs::path file = write_case("boundary.toml", std::string(kValid) + R"([[boundary]]
+name = "lid"
+type = "pressure"
+value = 0.0
+)");
+  const Result r = run("run " + file.string() + " -o " + (file.parent_path() / "out").string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("lid"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("symmetry_x"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadOverrideIsReported) {
+  const fs::path file = write_case("valid.toml", kValid);
+  const Result r = run("run " + file.string() + " --set time.dt=-1");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("time.dt"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownOptionAndMissingCase) {
+  EXPECT_EQ(run("run --frobnicate x.toml").status, 1);
+  const Result missing = run("run /nonexistent/case.toml");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.output.find("/nonexistent/case.toml"), std::string::npos) << missing.output;
+}
+
+}  // namespace

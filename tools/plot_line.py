@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""Pressure (and axial displacement) along the probe line from one or more runs' line.csv.
+
+usage: plot_line.py RUN_DIR [RUN_DIR ...] [-o OUT.png] [--time T]
+One run: a curve per output time. Several runs: one curve per run at time T (default: the last
+output time), labelled by the run's title, e.g. to compare with and without GLS.
+"""
+import argparse
+import csv
+import json
+import pathlib
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_line(run_dir):
+    rows = list(csv.DictReader(open(pathlib.Path(run_dir) / "line.csv")))
+    by_time = {}
+    for r in rows:
+        by_time.setdefault(float(r["t"]), []).append(r)
+    return by_time
+
+
+def title_of(run_dir):
+    try:
+        s = json.load(open(pathlib.Path(run_dir) / "summary.json"))
+        return s["configuration"].get("title") or str(run_dir)
+    except (OSError, KeyError, ValueError):
+        return str(run_dir)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("-o", "--output", default="pressure_profiles.png")
+    ap.add_argument("--time", type=float, default=None)
+    args = ap.parse_args()
+
+    fig, (axp, axu) = plt.subplots(1, 2, figsize=(11, 4.5))
+    if len(args.runs) == 1:
+        data = read_line(args.runs[0])
+        for t in sorted(data):
+            if t == 0.0:
+                continue
+            rows = data[t]
+            axp.plot([float(r["p"]) for r in rows], [float(r["z"]) for r in rows], "o-", ms=3, label=f"t = {t:g} s")
+            axu.plot([float(r["uz"]) for r in rows], [float(r["z"]) for r in rows], "-", label=f"t = {t:g} s")
+        fig.suptitle(title_of(args.runs[0]))
+    else:
+        for run in args.runs:
+            data = read_line(run)
+            t = args.time if args.time is not None else max(data)
+            t = min(data, key=lambda x: abs(x - t))
+            rows = data[t]
+            label = f"{title_of(run)} (t = {t:g} s)"
+            axp.plot([float(r["p"]) for r in rows], [float(r["z"]) for r in rows], "o-", ms=3, label=label)
+            axu.plot([float(r["uz"]) for r in rows], [float(r["z"]) for r in rows], "-", label=label)
+    axp.set_xlabel("pressure p [MPa]")
+    axp.set_ylabel("z on the reference line [mm]")
+    axu.set_xlabel("axial displacement u_z [mm]")
+    for ax in (axp, axu):
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=130)
+    print(args.output)
+
+
+if __name__ == "__main__":
+    main()
