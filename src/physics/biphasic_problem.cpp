@@ -199,7 +199,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
               r = -face_p2_integrals(X) * t.transpose();
             } else {
               const Vec3 inward = node_vec(mesh, opposite_vertex(f)) - X.row(0).transpose();
-              r = -face_normal_integrals(X, inward);  // t̄ = −N, times value below
+              // t̄ = −value N: −∫ N_a t̄ dA = value ∫ N_a N dA (value applied below)
+              r = face_normal_integrals(X, inward);
             }
             for (int a = 0; a < 6; ++a)
               for (int c = 0; c < 3; ++c) load[pattern_.u_dof(f[a], c)] += r(a, c);

@@ -68,3 +68,32 @@ TEST(Assembly, JacobianMatchesDifferencesOfResidual) {
 
 }  // namespace
 }  // namespace biphasic
+
+namespace biphasic {
+namespace {
+
+// Consistent nodal loads of surface data: their sums are the resultant over the face.
+TEST(Assembly, SurfaceLoadsSumToResultants) {
+  const Mesh mesh = test::box_mesh({2, 3, 2}, {1.0, 1.5, 2.0});  // face x1 has area 3
+  Config cfg;
+  cfg.curves["half"] = LoadCurve{{{0.0, 0.5}}};
+  cfg.bcs = {{BcType::Traction, "x1", 0, 0.0, {0.2, -0.1, 0.05}, ""},
+             {BcType::NormalTraction, "y0", 0, 0.3, {}, "half"},  // area 2, outward N = −y
+             {BcType::Flux, "z1", 0, 1e-3, {}, ""}};              // area 1.5
+  BiphasicProblem problem(mesh, cfg);
+  std::vector<double> y(problem.size(), 0.0), ydot(problem.size(), 0.0), R(problem.size());
+  problem.residual(0.0, y.data(), ydot.data(), R.data());
+  // At rest the body contributes nothing: R = −(traction loads) + flux loads.
+  Vec3 force = Vec3::Zero();
+  for (Index n = 0; n < mesh.num_nodes(); ++n)
+    for (int c = 0; c < 3; ++c) force(c) += R[3 * n + c];
+  // −∫ t̄ dA over x1 − ∫ (−0.3 · 0.5 · N) dA over y0, with N = −e_y.
+  const Vec3 expected = -3.0 * Vec3(0.2, -0.1, 0.05) + 0.15 * 2.0 * Vec3(0.0, -1.0, 0.0);
+  EXPECT_LT((force - expected).norm(), 1e-13);
+  double flux = 0.0;
+  for (Index i = problem.num_u(); i < problem.size(); ++i) flux += R[i];
+  EXPECT_NEAR(flux, 1e-3 * 1.5, 1e-16);
+}
+
+}  // namespace
+}  // namespace biphasic
