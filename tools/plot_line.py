@@ -24,10 +24,15 @@ def read_line(run_dir):
     return by_time
 
 
-def title_of(run_dir):
+def title_of(run_dir, short=False):
+    """The run's title, or (short) its folder name with permeability and stabilisation."""
     try:
         s = json.load(open(pathlib.Path(run_dir) / "summary.json"))
-        return s["configuration"].get("title") or str(run_dir)
+        cfg = s["configuration"]
+        if short:
+            return (f"{pathlib.Path(run_dir).name}: k = {cfg['material']['permeability']:g}, "
+                    f"{cfg['stabilisation']['type']}")
+        return cfg.get("title") or str(run_dir)
     except (OSError, KeyError, ValueError):
         return str(run_dir)
 
@@ -55,7 +60,7 @@ def main():
             t = args.time if args.time is not None else max(data)
             t = min(data, key=lambda x: abs(x - t))
             rows = data[t]
-            label = f"{title_of(run)} (t = {t:g} s)"
+            label = f"{title_of(run, short=True)} (t = {t:g} s)"
             axp.plot([float(r["p"]) for r in rows], [float(r["z"]) for r in rows], "o-", ms=3, label=label)
             axu.plot([float(r["uz"]) for r in rows], [float(r["z"]) for r in rows], "-", label=label)
     axp.set_xlabel("pressure p [MPa]")

@@ -735,4 +735,10 @@ nlohmann::json config_to_json(const Config& config) {
   return out;
 }
 
+std::string to_string(BcType type) { return case_schema::bc_type_name(type); }
+
+std::string to_string(Ordering ordering) {
+  return case_schema::name_of(case_schema::ordering_names(), ordering);
+}
+
 }  // namespace biphasic

@@ -43,26 +43,8 @@ double element_length(const TetCorners& x, ElementLength choice) {
   return 0.0;
 }
 
-const char* bc_type_name(BcType t) {
-  switch (t) {
-    case BcType::Displacement:
-      return "displacement";
-    case BcType::Symmetry:
-      return "symmetry";
-    case BcType::Pressure:
-      return "pressure";
-    case BcType::Flux:
-      return "flux";
-    case BcType::Traction:
-      return "traction";
-    case BcType::NormalTraction:
-      return "normal_traction";
-  }
-  return "?";
-}
-
 std::string bc_label(std::size_t i, const BoundaryCondition& bc) {
-  return "boundary[" + std::to_string(i) + "] (" + bc_type_name(bc.type) + " on '" + bc.boundary +
+  return "boundary[" + std::to_string(i) + "] (" + to_string(bc.type) + " on '" + bc.boundary +
          "')";
 }
 

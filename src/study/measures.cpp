@@ -18,7 +18,7 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
   m.defined = m.p_mid != 0.0;
   if (m.defined) {
     m.overshoot = (m.p_max - m.p_mid) / m.p_mid;
-    m.undershoot = -m.p_min / m.p_mid;
+    m.undershoot = -m.p_min / m.p_mid + 0.0;  // + 0.0: no "-0" when min p = 0
   }
   return m;
 }

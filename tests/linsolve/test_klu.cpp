@@ -65,7 +65,7 @@ TEST_P(Klu, SolvesAssembledSystem) {
 
 INSTANTIATE_TEST_SUITE_P(Orderings, Klu,
                          ::testing::Values(Ordering::Amd, Ordering::Colamd, Ordering::Metis),
-                         [](const auto& param_info) { return ordering_name(param_info.param); });
+                         [](const auto& param_info) { return to_string(param_info.param); });
 
 }  // namespace
 }  // namespace biphasic

@@ -16,7 +16,7 @@ namespace biphasic {
 struct LoadCurve {
   std::vector<std::pair<double, double>> points;
   double value(double t) const;
-  double slope(double t) const;       ///< right derivative d value/dt [1/s]
+  double slope(double t) const;  ///< right derivative d value/dt [1/s]
   /// Times where the slope changes (breakpoints), counting the constant extrapolation: for
   /// [[0,0],[32,1]] this is {0, 32}; a point inside a straight stretch is not a kink.
   std::vector<double> kinks() const;
@@ -100,6 +100,10 @@ struct OutputConfig {
   bool fields = true;  ///< HDF5/XDMF fields
   bool line = true;    ///< line CSV
 };
+
+/// Case-file names of enumerators ("displacement", "metis", …).
+std::string to_string(BcType type);
+std::string to_string(Ordering ordering);
 
 struct Config {
   std::string case_file;  ///< path of the case file read

@@ -40,7 +40,4 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
 /// pivot order is reused (klu_refactor) until the pivot condition estimate degrades.
 LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
 
-/// Name of an ordering as used in case files ("amd", "colamd", "metis").
-std::string ordering_name(Ordering o);
-
 }  // namespace biphasic
