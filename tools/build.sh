@@ -4,7 +4,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/install_deps.sh"
-werror=OFF
-if [[ "${CI:-}" == "true" ]]; then werror=ON; fi
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DBIPHASIC_WERROR=$werror "$@" >/dev/null
+# CI builds with warnings as errors; otherwise the build keeps whatever it was configured with.
+extra=()
+if [[ "${CI:-}" == "true" ]]; then extra+=(-DBIPHASIC_WERROR=ON); fi
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "${extra[@]}" "$@" >/dev/null
 cmake --build "$root/build" -j "$(nproc)"
