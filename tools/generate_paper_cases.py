@@ -72,7 +72,7 @@ t_end = 32.0
 dt = 6.4
 
 [linear_solver]
-type = "klu"
+type = "mumps"
 ordering = "metis"
 
 [output]

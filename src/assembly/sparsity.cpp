@@ -72,8 +72,9 @@ Index SparsityPattern::find(Index row, Index col) const {
   return (it != end && *it == row) ? it - rowind_.data() : -1;
 }
 
-void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatrix& M, double scale,
-                              const std::vector<char>& skip_row, double* values) const {
+void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatrix& A,
+                              const ElementMatrix& B, double c, const std::vector<char>& skip_row,
+                              double* values) const {
   const auto& pos = local_pos_[element];
   Index rows[kElementDofs];
   for (int r = 0; r < kElementDofs; ++r) rows[r] = global_dof(tet, r);
@@ -86,7 +87,7 @@ void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatr
       if (skip_row[rows[r]]) continue;
       const Index offset =
           r < 30 ? 3 * pos[a * 10 + r / 3] + r % 3 : 3 * deg + pos[a * 10 + r - 30];
-      values[base + offset] += scale * M(r, s);
+      values[base + offset] += A(r, s) + c * B(r, s);
     }
   }
 }

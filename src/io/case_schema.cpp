@@ -58,7 +58,9 @@ const Names<Integrator>& integrator_names() {
 }
 
 const Names<LinearSolverType>& linear_solver_names() {
-  static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu}};
+  static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu},
+                                             {"umfpack", LinearSolverType::Umfpack},
+                                             {"mumps", LinearSolverType::Mumps}};
   return names;
 }
 
@@ -316,7 +318,9 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.time.newton.reuse_across_steps; }));
 
   keys.push_back(choice_key<C>(
-      "linear_solver.type", linear_solver_names(), "Sparse direct solver.",
+      "linear_solver.type", linear_solver_names(),
+      "Sparse direct solver: mumps and umfpack (multifrontal, BLAS-3; fast with OpenBLAS) or "
+      "klu (no BLAS; suits small problems).",
       [](auto& c) -> auto& { return c.linear_solver.type; }));
   keys.push_back(choice_key<C>(
       "linear_solver.ordering", ordering_names(),

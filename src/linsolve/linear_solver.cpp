@@ -9,6 +9,10 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
   switch (config.type) {
     case LinearSolverType::Klu:
       return make_klu_solver(config.ordering, ctx, stats);
+    case LinearSolverType::Umfpack:
+      return make_umfpack_solver(config.ordering, ctx, stats);
+    case LinearSolverType::Mumps:
+      return make_mumps_solver(config.ordering, ctx, stats);
   }
   return nullptr;
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "biphasic/assembly/colouring.hpp"
 #include "biphasic/fe/tet_geometry.hpp"
 #include "biphasic/physics/boundary_integrals.hpp"
 
@@ -71,7 +72,7 @@ int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
 }  // namespace
 
 BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
-    : mesh_(mesh), curves_(config.curves), pattern_(mesh) {
+    : mesh_(mesh), curves_(config.curves), pattern_(mesh), colours_(colour_elements(mesh)) {
   params_.material = {config.material.lambda, config.material.mu};
   params_.permeability = config.material.permeability;
 
@@ -234,16 +235,39 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
   }
 }
 
+template <class Work>
+void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, const double* ydot,
+                                       Work&& work) {
+  std::string failure;
+  for (const std::vector<Index>& colour : colours_) {
+    const auto count = static_cast<std::ptrdiff_t>(colour.size());
+#pragma omp parallel
+    {
+      ElementOutput out;
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const Index e = colour[i];
+        try {
+          element(e, y, ydot, with_jacobian, out);
+          work(e, out);
+        } catch (const InvertedElement& err) {
+#pragma omp critical(biphasic_assembly_failure)
+          if (failure.empty()) failure = err.what();
+        }
+      }
+    }
+    if (!failure.empty()) throw InvertedElement(failure);
+  }
+}
+
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   const Index n = size();
   std::fill(F, F + n, 0.0);
-  ElementOutput out;
-  for (Index e = 0; e < static_cast<Index>(mesh_.tets.size()); ++e) {
-    element(e, y, ydot, false, out);
+  for_each_element(false, y, ydot, [&](Index e, const ElementOutput& out) {
     const Tet10& tet = mesh_.tets[e];
     for (int s = 0; s < kElementDofs; ++s) F[pattern_.global_dof(tet, s)] += out.residual(s);
-  }
+  });
   for (const NodalLoad& l : loads_) {
     const double scale = l.value * curve_value(l.curve, t);
     for (const auto& [row, amount] : l.entries) F[row] += scale * amount;
@@ -260,12 +284,9 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
                                double* values) {
   const auto t0 = Clock::now();
   std::fill(values, values + pattern_.nnz(), 0.0);
-  ElementOutput out;
-  for (Index e = 0; e < static_cast<Index>(mesh_.tets.size()); ++e) {
-    element(e, y, ydot, true, out);
-    out.dfdy += cj * out.dfdydot;
-    pattern_.scatter(e, mesh_.tets[e], out.dfdy, 1.0, constrained_, values);
-  }
+  for_each_element(true, y, ydot, [&](Index e, const ElementOutput& out) {
+    pattern_.scatter(e, mesh_.tets[e], out.dfdy, out.dfdydot, cj, constrained_, values);
+  });
   for (const Dirichlet& d : dirichlet_)
     values[pattern_.find(d.dof, d.dof)] = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
   ++stats_.jacobian_evaluations;

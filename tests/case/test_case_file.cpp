@@ -207,7 +207,8 @@ TEST(CaseFile, DefaultsAppliedWhenKeysAbsent) {
   EXPECT_DOUBLE_EQ(c.time.newton.atol_pressure, 1e-15);
   EXPECT_EQ(c.time.newton.max_setup_calls, 10);
   EXPECT_TRUE(c.time.newton.reuse_across_steps);
-  EXPECT_EQ(c.linear_solver.ordering, Ordering::Amd);
+  EXPECT_EQ(c.linear_solver.type, LinearSolverType::Mumps);
+  EXPECT_EQ(c.linear_solver.ordering, Ordering::Metis);
   EXPECT_EQ(c.output.line_end, d.output.line_end);
   EXPECT_EQ(c.output.every, 1);
   EXPECT_TRUE(c.output.fields);

@@ -31,10 +31,10 @@ class SparsityPattern {
   /// Position in the value array of entry (row, col); −1 if outside the pattern.
   Index find(Index row, Index col) const;
 
-  /// Adds an element matrix into `values` (the CSC value array), skipping rows flagged in
-  /// `skip_row` (Dirichlet rows). `scale` multiplies the contribution.
-  void scatter(Index element, const Tet10& tet, const ElementMatrix& M, double scale,
-               const std::vector<char>& skip_row, double* values) const;
+  /// Adds A + c·B of an element into `values` (the CSC value array), skipping rows flagged
+  /// in `skip_row` (Dirichlet rows).
+  void scatter(Index element, const Tet10& tet, const ElementMatrix& A, const ElementMatrix& B,
+               double c, const std::vector<char>& skip_row, double* values) const;
 
  private:
   Index num_nodes_ = 0, num_vertices_ = 0, num_dofs_ = 0;

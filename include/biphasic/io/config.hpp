@@ -85,12 +85,14 @@ struct TimeConfig {
   NewtonConfig newton;
 };
 
-enum class LinearSolverType { Klu };
+enum class LinearSolverType { Klu, Umfpack, Mumps };
 enum class Ordering { Amd, Colamd, Metis };
 
+/// Default: MUMPS with METIS ordering, the fastest of the three on the paper's meshes
+/// (docs/performance.md).
 struct LinearSolverConfig {
-  LinearSolverType type = LinearSolverType::Klu;
-  Ordering ordering = Ordering::Amd;
+  LinearSolverType type = LinearSolverType::Mumps;
+  Ordering ordering = Ordering::Metis;
 };
 
 struct OutputConfig {

@@ -40,4 +40,13 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
 /// pivot order is reused (klu_refactor) until the pivot condition estimate degrades.
 LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
 
+/// UMFPACK (SuiteSparse multifrontal LU, BLAS-3; fast with OpenBLAS) under its symmetric
+/// strategy with AMD or METIS ordering (COLAMD selects the unsymmetric strategy). Symbolic
+/// analysis once; a numeric factorisation at each setup.
+LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+
+/// MUMPS (sequential build; multifrontal LU, BLAS-3) with AMD or METIS ordering (COLAMD maps
+/// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup.
+LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+
 }  // namespace biphasic

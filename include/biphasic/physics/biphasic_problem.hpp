@@ -71,6 +71,10 @@ class BiphasicProblem {
   };
   void gather(Index e, const double* y, const double* ydot, ElementVector& ye,
               ElementVector& ydote) const;
+  /// Runs work(e, out) over all elements, colour by colour, in parallel within a colour
+  /// (OpenMP). An InvertedElement thrown by any element is rethrown after the loop.
+  template <class Work>
+  void for_each_element(bool with_jacobian, const double* y, const double* ydot, Work&& work);
   double curve_value(const LoadCurve* c, double t) const { return c ? c->value(t) : 1.0; }
 
   const Mesh& mesh_;
@@ -79,6 +83,7 @@ class BiphasicProblem {
   std::vector<std::vector<PointGeometry>> geometry_;
   std::vector<double> gls_c_;
   SparsityPattern pattern_;
+  std::vector<std::vector<Index>> colours_;  ///< elements sharing no node, per colour
   std::vector<Dirichlet> dirichlet_;
   std::vector<char> constrained_;
   std::vector<NodalLoad> loads_;
