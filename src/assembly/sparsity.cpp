@@ -1,5 +1,7 @@
 #include "biphasic/assembly/sparsity.hpp"
 
+#include <metis.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -90,6 +92,33 @@ void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatr
       values[base + offset] += A(r, s) + c * B(r, s);
     }
   }
+}
+
+std::vector<Index> SparsityPattern::nested_dissection_order() const {
+  std::vector<idx_t> xadj(static_cast<std::size_t>(num_nodes_) + 1, 0), adjncy;
+  adjncy.reserve(adj_.size());
+  for (Index n = 0; n < num_nodes_; ++n) {
+    for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1]; ++q)
+      if (adj_[q] != n) adjncy.push_back(static_cast<idx_t>(adj_[q]));
+    xadj[n + 1] = static_cast<idx_t>(adjncy.size());
+  }
+  std::vector<idx_t> perm(static_cast<std::size_t>(num_nodes_)),
+      iperm(static_cast<std::size_t>(num_nodes_));
+  idx_t nv = static_cast<idx_t>(num_nodes_);
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  if (num_nodes_ > 1 && METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options, perm.data(),
+                                     iperm.data()) != METIS_OK)
+    throw std::runtime_error("METIS_NodeND failed on the node graph");
+  if (num_nodes_ == 1) perm[0] = 0;
+  std::vector<Index> order;
+  order.reserve(static_cast<std::size_t>(num_dofs_));
+  for (idx_t k = 0; k < nv; ++k) {
+    const Index n = perm[k];
+    for (int c = 0; c < 3; ++c) order.push_back(u_dof(n, c));
+    if (n < num_vertices_) order.push_back(p_dof(n));
+  }
+  return order;
 }
 
 }  // namespace biphasic

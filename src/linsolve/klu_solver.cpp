@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 #include <vector>
 
 #include "biphasic/linsolve/linear_solver.hpp"
@@ -62,6 +63,7 @@ struct KluContent {
   klu_l_symbolic* symbolic = nullptr;
   klu_l_numeric* numeric = nullptr;
   LinearSolverStats* stats = nullptr;
+  FillOrder order;  ///< caller's pivot order (empty: KLU orders)
   int last_flag = 0;
 };
 
@@ -83,7 +85,12 @@ int klu_setup(SUNLinearSolver S, SUNMatrix A) {
   double* Ax = SUNSparseMatrix_Data(A);
   if (!c->symbolic) {
     const auto t0 = Clock::now();
-    c->symbolic = klu_l_analyze(n, Ap, Ai, &c->common);
+    if (c->order.empty()) {
+      c->symbolic = klu_l_analyze(n, Ap, Ai, &c->common);
+    } else {
+      std::vector<SuiteSparse_long> P(c->order.begin(), c->order.end());
+      c->symbolic = klu_l_analyze_given(n, Ap, Ai, P.data(), P.data(), &c->common);
+    }
     c->stats->analysis_seconds += seconds_since(t0);
     ++c->stats->analyses;
     if (!c->symbolic) return set_flag(c, SUNLS_PACKAGE_FAIL_UNREC);
@@ -138,10 +145,12 @@ int klu_free(SUNLinearSolver S) {
 
 }  // namespace
 
-LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats) {
+LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                FillOrder order) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   auto* c = new KluContent;
   c->stats = stats;
+  c->order = std::move(order);
   klu_l_defaults(&c->common);
   switch (ordering) {
     case Ordering::Amd:

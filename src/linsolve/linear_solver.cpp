@@ -1,18 +1,28 @@
 #include "biphasic/linsolve/linear_solver.hpp"
 
+#include <utility>
+
+#include "biphasic/assembly/sparsity.hpp"
+
 namespace biphasic {
 
 void LinearSolverDeleter::operator()(_generic_SUNLinearSolver* s) const { SUNLinSolFree(s); }
 
+FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern) {
+  if (config.ordering != Ordering::Metis || config.type == LinearSolverType::Umfpack) return {};
+  const std::vector<Index> nodal = pattern.nested_dissection_order();
+  return FillOrder(nodal.begin(), nodal.end());
+}
+
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
-                                   LinearSolverStats* stats) {
+                                   LinearSolverStats* stats, FillOrder order) {
   switch (config.type) {
     case LinearSolverType::Klu:
-      return make_klu_solver(config.ordering, ctx, stats);
+      return make_klu_solver(config.ordering, ctx, stats, std::move(order));
     case LinearSolverType::Umfpack:
-      return make_umfpack_solver(config.ordering, ctx, stats);
+      return make_umfpack_solver(config.ordering, ctx, stats, std::move(order));
     case LinearSolverType::Mumps:
-      return make_mumps_solver(config.ordering, ctx, stats);
+      return make_mumps_solver(config.ordering, ctx, stats, std::move(order));
   }
   return nullptr;
 }

@@ -25,6 +25,7 @@ struct MumpsContent {
   bool analysed = false;
   bool factorised = false;
   std::vector<MUMPS_INT> irn, jcn;  ///< 1-based coordinates in CSC value order
+  std::vector<MUMPS_INT> perm_in;   ///< position of each unknown in the caller's order (1-based)
   LinearSolverStats* stats = nullptr;
   int last_flag = 0;
 };
@@ -114,7 +115,8 @@ int mumps_free(SUNLinearSolver S) {
 
 }  // namespace
 
-LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats) {
+LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                  FillOrder order) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   auto* c = new MumpsContent;
   c->stats = stats;
@@ -139,6 +141,13 @@ LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolve
     case Ordering::Metis:
       icntl(id, 7) = 5;
       break;
+  }
+  if (!order.empty()) {
+    c->perm_in.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      c->perm_in[static_cast<std::size_t>(order[k])] = static_cast<MUMPS_INT>(k + 1);
+    id.perm_in = c->perm_in.data();
+    icntl(id, 7) = 1;  // the given order
   }
   icntl(id, 14) = 40;  // working-space relaxation [%]
   S->content = c;

@@ -5,6 +5,7 @@
 #include <umfpack.h>
 
 #include <chrono>
+#include <utility>
 #include <vector>
 
 #include "biphasic/linsolve/linear_solver.hpp"
@@ -25,6 +26,7 @@ struct UmfContent {
   void* numeric = nullptr;
   std::vector<double> rhs;
   LinearSolverStats* stats = nullptr;
+  FillOrder order;  ///< caller's column pre-order (empty: UMFPACK orders)
   int last_flag = 0;
 };
 
@@ -46,8 +48,9 @@ int umf_setup(SUNLinearSolver S, SUNMatrix A) {
   const double* Ax = SUNSparseMatrix_Data(A);
   if (!c->symbolic) {
     const auto t0 = Clock::now();
-    const int status =
-        static_cast<int>(umfpack_dl_symbolic(n, n, Ap, Ai, Ax, &c->symbolic, c->control, c->info));
+    std::vector<SuiteSparse_long> Q(c->order.begin(), c->order.end());
+    const int status = static_cast<int>(umfpack_dl_qsymbolic(
+        n, n, Ap, Ai, Ax, Q.empty() ? nullptr : Q.data(), &c->symbolic, c->control, c->info));
     c->stats->analysis_seconds += seconds_since(t0);
     ++c->stats->analyses;
     if (status != UMFPACK_OK) return set_flag(c, SUNLS_PACKAGE_FAIL_UNREC);
@@ -96,10 +99,12 @@ int umf_free(SUNLinearSolver S) {
 
 }  // namespace
 
-LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats) {
+LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                    FillOrder order) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   auto* c = new UmfContent;
   c->stats = stats;
+  c->order = std::move(order);
   umfpack_dl_defaults(c->control);
   // The P2/P1 matrix is structurally symmetric with a mostly symmetric numerical pattern:
   // order A + Aᵀ and prefer diagonal pivots.

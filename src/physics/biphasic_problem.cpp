@@ -1,9 +1,12 @@
 #include "biphasic/physics/biphasic_problem.hpp"
 
+#include <omp.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <sstream>
@@ -18,6 +21,16 @@ namespace biphasic {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// Threads for assembly: OMP_NUM_THREADS if set, else every processor. (gmsh sets the OpenMP
+/// default to its own General.NumThreads, so the runtime's default cannot be trusted here.)
+int assembly_threads() {
+  if (const char* env = std::getenv("OMP_NUM_THREADS")) {
+    const int n = std::atoi(env);
+    if (n > 0) return n;
+  }
+  return omp_get_num_procs();
+}
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -239,9 +252,10 @@ template <class Work>
 void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, const double* ydot,
                                        Work&& work) {
   std::string failure;
+  static const int threads = assembly_threads();
   for (const std::vector<Index>& colour : colours_) {
     const auto count = static_cast<std::ptrdiff_t>(colour.size());
-#pragma omp parallel
+#pragma omp parallel num_threads(threads)
     {
       ElementOutput out;
 #pragma omp for schedule(static)

@@ -122,7 +122,7 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
   m.fscale = N_VNew_Serial(n, m.ctx);
   N_VConst(1.0, m.uscale);
   m.A = SUNSparseMatrix(n, n, pat.nnz(), CSC_MAT, m.ctx);
-  m.ls = make_linear_solver(linear_solver, m.ctx, &ls_stats_);
+  m.ls = make_linear_solver(linear_solver, m.ctx, &ls_stats_, fill_order(linear_solver, pat));
   m.y_old.assign(n, 0.0);
   m.ydot.assign(n, 0.0);
   m.last_residual.assign(n, 0.0);

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
@@ -28,6 +29,17 @@ class SparsityPattern {
   }
   const std::vector<Index>& colptr() const { return colptr_; }
   const std::vector<Index>& rowind() const { return rowind_; }
+  /// Nodes sharing an element with node n (n included), sorted; vertices come first.
+  std::pair<const Index*, const Index*> node_neighbours(Index n) const {
+    return {adj_.data() + adj_ptr_[n], adj_.data() + adj_ptr_[n + 1]};
+  }
+  Index num_nodes() const { return num_nodes_; }
+  Index num_vertices() const { return num_vertices_; }
+  /// Fill-reducing order of the unknowns: METIS nested dissection of the node graph (a few
+  /// times smaller than the matrix graph), each node's unknowns kept together.
+  /// order[k] = unknown placed k-th.
+  std::vector<Index> nested_dissection_order() const;
+
   /// Position in the value array of entry (row, col); −1 if outside the pattern.
   Index find(Index row, Index col) const;
 

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "biphasic/io/config.hpp"
 
@@ -31,22 +32,36 @@ struct LinearSolverDeleter {
 };
 using LinearSolverPtr = std::unique_ptr<_generic_SUNLinearSolver, LinearSolverDeleter>;
 
+/// A pivot order given by the caller: order[k] = unknown eliminated k-th (empty: the solver
+/// computes its own from the configured ordering).
+using FillOrder = std::vector<sunindextype>;
+
+class SparsityPattern;
+
+/// The pivot order to hand to the configured solver for this pattern: with METIS, nested
+/// dissection of the node graph (several times cheaper than METIS on the matrix, and as good),
+/// except for UMFPACK, whose own METIS ordering suits its strategy better; otherwise empty.
+FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern);
+
 /// The solver the configuration names. `stats` must outlive the solver.
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
-                                   LinearSolverStats* stats);
+                                   LinearSolverStats* stats, FillOrder order = {});
 
 /// KLU (SuiteSparse) with AMD, COLAMD or METIS nested-dissection ordering. Unlike SUNDIALS'
 /// SUNLinSol_KLU, re-initialisation by KINSol/IDAReInit keeps the symbolic analysis; the
 /// pivot order is reused (klu_refactor) until the pivot condition estimate degrades.
-LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                FillOrder order = {});
 
 /// UMFPACK (SuiteSparse multifrontal LU, BLAS-3; fast with OpenBLAS) under its symmetric
 /// strategy with AMD or METIS ordering (COLAMD selects the unsymmetric strategy). Symbolic
 /// analysis once; a numeric factorisation at each setup.
-LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                    FillOrder order = {});
 
 /// MUMPS (sequential build; multifrontal LU, BLAS-3) with AMD or METIS ordering (COLAMD maps
 /// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup.
-LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats);
+LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
+                                  FillOrder order = {});
 
 }  // namespace biphasic
