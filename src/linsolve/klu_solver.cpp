@@ -1,24 +1,19 @@
 // KLU as a SUNLinearSolver: analysis once, klu_refactor while the pivot order stays good.
 #include <klu.h>
 #include <metis.h>
-#include <nvector/nvector_serial.h>
-#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
-#include <chrono>
 #include <utility>
 #include <vector>
 
-#include "biphasic/linsolve/linear_solver.hpp"
+#include "direct_solver.hpp"
 
 namespace biphasic {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using detail::Clock;
+using detail::seconds_since;
 
 /// Fill-reducing nested-dissection ordering of A + Aᵀ by METIS (KLU's user_order hook).
 /// Perm[k] = original index of the k-th pivot. Returns 0 on failure.
@@ -58,121 +53,88 @@ SuiteSparse_long metis_order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSpar
   return 1;
 }
 
-struct KluContent {
-  klu_l_common common{};
-  klu_l_symbolic* symbolic = nullptr;
-  klu_l_numeric* numeric = nullptr;
-  LinearSolverStats* stats = nullptr;
-  FillOrder order;  ///< caller's pivot order (empty: KLU orders)
-  int last_flag = 0;
-};
+class KluSolver final : public detail::DirectSolver {
+ public:
+  KluSolver(Ordering ordering, LinearSolverStats* stats, FillOrder order)
+      : DirectSolver(stats), order_(std::move(order)) {
+    klu_l_defaults(&common_);
+    switch (ordering) {
+      case Ordering::Amd:
+        common_.ordering = 0;
+        break;
+      case Ordering::Colamd:
+        common_.ordering = 1;
+        break;
+      case Ordering::Metis:
+        common_.ordering = 3;
+        common_.user_order = metis_order;
+        break;
+    }
+  }
+  ~KluSolver() override {
+    if (numeric_) klu_l_free_numeric(&numeric_, &common_);
+    if (symbolic_) klu_l_free_symbolic(&symbolic_, &common_);
+  }
 
-KluContent* content(SUNLinearSolver S) { return static_cast<KluContent*>(S->content); }
-int set_flag(KluContent* c, int flag) {
-  c->last_flag = flag;
-  return flag;
-}
-
-SUNLinearSolver_Type klu_gettype(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
-SUNLinearSolver_ID klu_getid(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
-int klu_initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
-
-int klu_setup(SUNLinearSolver S, SUNMatrix A) {
-  KluContent* c = content(S);
-  const auto n = static_cast<SuiteSparse_long>(SUNSparseMatrix_Columns(A));
-  auto* Ap = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexPointers(A));
-  auto* Ai = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexValues(A));
-  double* Ax = SUNSparseMatrix_Data(A);
-  if (!c->symbolic) {
+  int setup(SUNMatrix A) override {
+    const auto n = static_cast<SuiteSparse_long>(SUNSparseMatrix_Columns(A));
+    auto* Ap = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexPointers(A));
+    auto* Ai = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexValues(A));
+    double* Ax = SUNSparseMatrix_Data(A);
+    if (!symbolic_) {
+      const auto t0 = Clock::now();
+      if (order_.empty()) {
+        symbolic_ = klu_l_analyze(n, Ap, Ai, &common_);
+      } else {
+        std::vector<SuiteSparse_long> P(order_.begin(), order_.end());
+        symbolic_ = klu_l_analyze_given(n, Ap, Ai, P.data(), P.data(), &common_);
+      }
+      stats().analysis_seconds += seconds_since(t0);
+      ++stats().analyses;
+      if (!symbolic_) return SUNLS_PACKAGE_FAIL_UNREC;
+    }
     const auto t0 = Clock::now();
-    if (c->order.empty()) {
-      c->symbolic = klu_l_analyze(n, Ap, Ai, &c->common);
-    } else {
-      std::vector<SuiteSparse_long> P(c->order.begin(), c->order.end());
-      c->symbolic = klu_l_analyze_given(n, Ap, Ai, P.data(), P.data(), &c->common);
+    bool fresh = true;
+    if (numeric_) {
+      // Same pivot order; fall back to a pivoting factorisation when it degrades.
+      if (klu_l_refactor(Ap, Ai, Ax, symbolic_, numeric_, &common_) &&
+          klu_l_rcond(symbolic_, numeric_, &common_) && common_.rcond > 1e-12) {
+        fresh = false;
+        ++stats().refactorizations;
+      } else {
+        klu_l_free_numeric(&numeric_, &common_);
+      }
     }
-    c->stats->analysis_seconds += seconds_since(t0);
-    ++c->stats->analyses;
-    if (!c->symbolic) return set_flag(c, SUNLS_PACKAGE_FAIL_UNREC);
+    if (fresh) numeric_ = klu_l_factor(Ap, Ai, Ax, symbolic_, &common_);
+    stats().factor_seconds += seconds_since(t0);
+    ++stats().factorizations;
+    if (!numeric_) return SUNLS_LUFACT_FAIL;
+    stats().fill = static_cast<double>(numeric_->lnz + numeric_->unz + numeric_->nzoff) /
+                   static_cast<double>(Ap[n]);
+    return SUNLS_SUCCESS;
   }
-  const auto t0 = Clock::now();
-  bool fresh = true;
-  if (c->numeric) {
-    // Same pivot order; fall back to a pivoting factorisation when it degrades.
-    if (klu_l_refactor(Ap, Ai, Ax, c->symbolic, c->numeric, &c->common) &&
-        klu_l_rcond(c->symbolic, c->numeric, &c->common) && c->common.rcond > 1e-12) {
-      fresh = false;
-      ++c->stats->refactorizations;
-    } else {
-      klu_l_free_numeric(&c->numeric, &c->common);
-    }
+
+  int solve(SUNMatrix A, N_Vector x, N_Vector b) override {
+    N_VScale(1.0, b, x);
+    const auto n = static_cast<SuiteSparse_long>(SUNSparseMatrix_Columns(A));
+    return klu_l_solve(symbolic_, numeric_, n, 1, N_VGetArrayPointer(x), &common_)
+               ? SUNLS_SUCCESS
+               : SUNLS_PACKAGE_FAIL_UNREC;
   }
-  if (fresh) c->numeric = klu_l_factor(Ap, Ai, Ax, c->symbolic, &c->common);
-  c->stats->factor_seconds += seconds_since(t0);
-  ++c->stats->factorizations;
-  if (!c->numeric) return set_flag(c, SUNLS_LUFACT_FAIL);
-  const double nnzA = static_cast<double>(Ap[n]);
-  c->stats->fill =
-      static_cast<double>(c->numeric->lnz + c->numeric->unz + c->numeric->nzoff) / nnzA;
-  return set_flag(c, SUNLS_SUCCESS);
-}
 
-int klu_solve_op(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype) {
-  KluContent* c = content(S);
-  const auto t0 = Clock::now();
-  N_VScale(1.0, b, x);
-  const auto n = static_cast<SuiteSparse_long>(SUNSparseMatrix_Columns(A));
-  const int ok = static_cast<int>(
-      klu_l_solve(c->symbolic, c->numeric, n, 1, N_VGetArrayPointer(x), &c->common));
-  c->stats->solve_seconds += seconds_since(t0);
-  ++c->stats->solves;
-  return set_flag(c, ok ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC);
-}
-
-sunindextype klu_lastflag(SUNLinearSolver S) { return content(S)->last_flag; }
-
-int klu_free(SUNLinearSolver S) {
-  if (!S) return SUNLS_SUCCESS;
-  if (KluContent* c = content(S)) {
-    if (c->numeric) klu_l_free_numeric(&c->numeric, &c->common);
-    if (c->symbolic) klu_l_free_symbolic(&c->symbolic, &c->common);
-    delete c;
-    S->content = nullptr;
-  }
-  SUNLinSolFreeEmpty(S);
-  return SUNLS_SUCCESS;
-}
+ private:
+  klu_l_common common_{};
+  klu_l_symbolic* symbolic_ = nullptr;
+  klu_l_numeric* numeric_ = nullptr;
+  FillOrder order_;  ///< caller's pivot order (empty: KLU orders)
+};
 
 }  // namespace
 
 LinearSolverPtr make_klu_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
                                 FillOrder order) {
-  SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
-  auto* c = new KluContent;
-  c->stats = stats;
-  c->order = std::move(order);
-  klu_l_defaults(&c->common);
-  switch (ordering) {
-    case Ordering::Amd:
-      c->common.ordering = 0;
-      break;
-    case Ordering::Colamd:
-      c->common.ordering = 1;
-      break;
-    case Ordering::Metis:
-      c->common.ordering = 3;
-      c->common.user_order = metis_order;
-      break;
-  }
-  S->content = c;
-  S->ops->gettype = klu_gettype;
-  S->ops->getid = klu_getid;
-  S->ops->initialize = klu_initialize;
-  S->ops->setup = klu_setup;
-  S->ops->solve = klu_solve_op;
-  S->ops->lastflag = klu_lastflag;
-  S->ops->free = klu_free;
-  return LinearSolverPtr(S);
+  return detail::wrap_direct_solver(std::make_unique<KluSolver>(ordering, stats, std::move(order)),
+                                    ctx);
 }
 
 }  // namespace biphasic

@@ -11,6 +11,7 @@
 #include "../common/box_mesh.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/study/paper_scene.hpp"
 #include "biphasic/time/backward_euler.hpp"
 
 namespace biphasic {
@@ -85,16 +86,7 @@ INSTANTIATE_TEST_SUITE_P(All, DirectSolver, ::testing::ValuesIn(kChoices),
 // The reference loading (k = 1e-3, GLS, 5 steps) on a coarse quarter cylinder: the pressure
 // field at t = 32 s agrees to 1e-8 (relative to its maximum) for every solver.
 TEST(DirectSolvers, SameAnswerWhicheverSolver) {
-  Config cfg;
-  cfg.mesh.cylinder.lc = 3.0;
-  cfg.stabilisation.type = Stabilisation::Gls;
-  cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {32.0, 1.0}}};
-  cfg.bcs = {{BcType::Displacement, "top", 2, -0.08, {}, "ramp"},
-             {BcType::Displacement, "bottom", 2, 0.0, {}, ""},
-             {BcType::Symmetry, "symmetry_x", 0, 0.0, {}, ""},
-             {BcType::Symmetry, "symmetry_y", 0, 0.0, {}, ""},
-             {BcType::Pressure, "top", 0, 0.0, {}, ""},
-             {BcType::Pressure, "bottom", 0, 0.0, {}, ""}};
+  Config cfg = paper_reference_config(3.0);
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   std::vector<double> reference;
   for (const SolverChoice& choice : kChoices) {

@@ -23,6 +23,7 @@
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/study/paper_scene.hpp"
 
 namespace {
 
@@ -51,27 +52,13 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-Config paper_config(double lc, LinearSolverType solver) {
-  Config cfg;
-  cfg.mesh.cylinder.lc = lc;
-  cfg.stabilisation.type = Stabilisation::Gls;
-  cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {32.0, 1.0}}};
-  cfg.bcs = {{BcType::Displacement, "top", 2, -0.08, {}, "ramp"},
-             {BcType::Displacement, "bottom", 2, 0.0, {}, ""},
-             {BcType::Symmetry, "symmetry_x", 0, 0.0, {}, ""},
-             {BcType::Symmetry, "symmetry_y", 0, 0.0, {}, ""},
-             {BcType::Pressure, "top", 0, 0.0, {}, ""},
-             {BcType::Pressure, "bottom", 0, 0.0, {}, ""}};
-  cfg.linear_solver = {solver, Ordering::Metis};
-  return cfg;
-}
-
 /// One (mesh, solver) measurement; returns a CSV line.
 std::string measure(double lc, const std::string& solver_name, int repeat) {
   const LinearSolverType solver = solver_name == "klu"       ? LinearSolverType::Klu
                                   : solver_name == "umfpack" ? LinearSolverType::Umfpack
                                                              : LinearSolverType::Mumps;
-  const Config cfg = paper_config(lc, solver);
+  Config cfg = paper_reference_config(lc);
+  cfg.linear_solver = {solver, Ordering::Metis};
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   BiphasicProblem problem(mesh, cfg);
   const Index n = problem.size();
