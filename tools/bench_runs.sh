@@ -9,7 +9,6 @@ out=${1:-results/bench}
 plan=${2:-"mumps:1,2,3,4 umfpack:1,2,3 klu:1"}
 bin="$root/build/biphasic"
 mkdir -p "$out"
-export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 echo "solver,mesh,unknowns,wall_s,peak_rss_gb,factorization_s,analysis_s,solve_s,assembly_s,newton_iterations,factorizations,fill" > "$out/runs.csv"
 for entry in $plan; do
   solver=${entry%%:*}

@@ -6,8 +6,6 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh"
 out="$root/results/reference"
-# Idle OpenMP threads sleep rather than spin, leaving the cores to the BLAS threads.
-export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 "$root/build/biphasic" run "$root/cases/paper/mesh1_k1e-3_gls.toml" -o "$out" "$@"
 /usr/bin/python3 "$root/tools/plot_line.py" "$out" -o "$out/pressure_profiles.png" || true
 echo "results: $out (line.csv, fields.xdmf for ParaView, summary.json, pressure_profiles.png)"
