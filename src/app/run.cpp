@@ -9,6 +9,7 @@
 
 #include <toml++/toml.h>
 #include <Eigen/Core>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -22,7 +23,7 @@
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/measures.hpp"
-#include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic {
 
@@ -102,7 +103,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
 
   t0 = Clock::now();
   BiphasicProblem problem(mesh, config);
-  BackwardEuler integrator(problem, config.time, config.linear_solver);
+  const std::unique_ptr<TimeIntegrator> integrator_ptr =
+      make_time_integrator(problem, config, out_dir.string());
+  TimeIntegrator& integrator = *integrator_ptr;
   const double setup_seconds = seconds_since(t0);
   summary["mesh"] = {{"nodes", mesh.num_nodes()},
                      {"vertices", mesh.num_vertices},
@@ -163,6 +166,17 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"refactorizations", ls.refactorizations},
                            {"linear_solves", ls.solves},
                            {"fill_ratio", ls.fill}};
+    if (config.time.integrator == Integrator::Bdf) {
+      summary["counters"]["error_test_failures"] = is.error_test_failures;
+      summary["counters"]["restarts"] = is.restarts;
+      summary["counters"]["steps_per_order"] = is.order_counts;
+      if (!is.step_sizes.empty()) {
+        std::vector<double> h = is.step_sizes;
+        std::sort(h.begin(), h.end());
+        summary["counters"]["step_size"] = {
+            {"min", h.front()}, {"median", h[h.size() / 2]}, {"max", h.back()}};
+      }
+    }
     const double assembly = as.residual_seconds + as.jacobian_seconds;
     const double linear = ls.analysis_seconds + ls.factor_seconds + ls.solve_seconds;
     summary["timings"] = {{"wall", wall},
@@ -188,6 +202,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     nlohmann::json rec{{"step", info.step},
                        {"t", info.t},
                        {"dt", info.dt},
+                       {"order", info.order},
+                       {"internal_steps", info.internal_steps},
                        {"newton_iterations", info.newton_iterations},
                        {"jacobian_evaluations", info.setups},
                        {"residual_u", info.residual_u},
@@ -206,11 +222,19 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     record_counters(seconds_since(wall0));
     write_json_atomically(summary_path, summary);
     char line[256];
-    std::snprintf(line, sizeof line,
-                  "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
-                  "|R_p| %.2e mm3/s",
-                  info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
-                  info.residual_u, info.residual_p);
+    if (config.time.integrator == Integrator::Bdf) {
+      std::snprintf(line, sizeof line,
+                    "output %4d/%d  t %9.4g s  steps %4d  order %d  h %8.3g s  newton %3d  "
+                    "|R_u| %.2e N  |R_p| %.2e mm3/s",
+                    info.step, planned, info.t, info.internal_steps, info.order, info.dt,
+                    info.newton_iterations, info.residual_u, info.residual_p);
+    } else {
+      std::snprintf(line, sizeof line,
+                    "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
+                    "|R_p| %.2e mm3/s",
+                    info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
+                    info.residual_u, info.residual_p);
+    }
     say(line + mid);
   };
 

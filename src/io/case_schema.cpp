@@ -53,7 +53,8 @@ const Names<ElementLength>& element_length_names() {
 }
 
 const Names<Integrator>& integrator_names() {
-  static const Names<Integrator> names{{"backward_euler", Integrator::BackwardEuler}};
+  static const Names<Integrator> names{{"backward_euler", Integrator::BackwardEuler},
+                                       {"bdf", Integrator::Bdf}};
   return names;
 }
 
@@ -279,13 +280,16 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.quadrature_points; }));
 
   keys.push_back(choice_key<C>(
-      "time.integrator", integrator_names(), "Time integrator.",
+      "time.integrator", integrator_names(),
+      "Time integrator: backward_euler (fixed time.dt, the paper's) or bdf (SUNDIALS IDA, "
+      "variable order and step; outputs every time.dt).",
       [](auto& c) -> auto& { return c.time.integrator; }));
   keys.push_back(number_key<C>(
       "time.t_end", above(0), "s", "End time of the run (starts at 0).",
       [](auto& c) -> auto& { return c.time.t_end; }));
   keys.push_back(number_key<C>(
-      "time.dt", above(0), "s", "Time step; must be <= time.t_end.",
+      "time.dt", above(0), "s",
+      "Backward-Euler time step, and the output interval of bdf; must be <= time.t_end.",
       [](auto& c) -> auto& { return c.time.dt; }));
 
   keys.push_back(integer_key<C>(
@@ -316,6 +320,36 @@ std::vector<Key<Config>> build_global_keys() {
       "time.newton.reuse_across_steps",
       "Keep the Jacobian factorisation from the previous time step.",
       [](auto& c) -> auto& { return c.time.newton.reuse_across_steps; }));
+
+  keys.push_back(number_key<C>(
+      "time.bdf.rtol", strictly_between(0, 1), "", "Relative tolerance of IDA's local error test.",
+      [](auto& c) -> auto& { return c.time.bdf.rtol; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.atol_displacement", above(0), "mm", "Absolute tolerance on displacements.",
+      [](auto& c) -> auto& { return c.time.bdf.atol_displacement; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.atol_pressure", above(0), "MPa", "Absolute tolerance on pressures.",
+      [](auto& c) -> auto& { return c.time.bdf.atol_pressure; }));
+  keys.push_back(integer_key<C>(
+      "time.bdf.max_order", from_to(1, 5), {}, "Maximum BDF order.",
+      [](auto& c) -> auto& { return c.time.bdf.max_order; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.initial_step", at_least(0), "s", "First step; 0 lets IDA estimate it.",
+      [](auto& c) -> auto& { return c.time.bdf.initial_step; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.max_step", at_least(0), "s", "Largest step; 0 = unlimited.",
+      [](auto& c) -> auto& { return c.time.bdf.max_step; }));
+  keys.push_back(integer_key<C>(
+      "time.bdf.max_steps", from_to(1, 100000000), {},
+      "Internal steps allowed between two outputs.",
+      [](auto& c) -> auto& { return c.time.bdf.max_steps; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.delta_cj", strictly_between(0, 1), "",
+      "Relative change of c_j = alpha/h that forces a new factorisation (IDASetDeltaCjLSetup).",
+      [](auto& c) -> auto& { return c.time.bdf.delta_cj; }));
+  keys.push_back(bool_key<C>(
+      "time.bdf.step_log", "Write steps.csv with t, h and order of every internal step.",
+      [](auto& c) -> auto& { return c.time.bdf.step_log; }));
 
   keys.push_back(choice_key<C>(
       "linear_solver.type", linear_solver_names(),

@@ -294,6 +294,20 @@ void BiphasicProblem::residual(double t, const double* y, const double* ydot, do
   stats_.residual_seconds += seconds_since(t0);
 }
 
+void BiphasicProblem::time_derivative(double t, double* dFdt) const {
+  std::fill(dFdt, dFdt + size(), 0.0);
+  for (const NodalLoad& l : loads_) {
+    if (!l.curve) continue;
+    const double rate = l.value * l.curve->slope(t);
+    for (const auto& [row, amount] : l.entries) dFdt[row] += rate * amount;
+  }
+  for (const Dirichlet& d : dirichlet_) {
+    if (!d.curve) continue;
+    const double s = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
+    dFdt[d.dof] = -s * d.value * d.curve->slope(t);
+  }
+}
+
 void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot, double cj,
                                double* values) {
   const auto t0 = Clock::now();

@@ -150,6 +150,10 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
 
 BackwardEuler::~BackwardEuler() = default;
 
+int BackwardEuler::planned_outputs() const {
+  return std::max(1, static_cast<int>(std::ceil(impl_->time.t_end / impl_->time.dt - 1e-9)));
+}
+
 void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
   Impl& m = *impl_;
   BiphasicProblem& problem = m.problem;

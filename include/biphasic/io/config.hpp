@@ -64,7 +64,7 @@ struct StabilisationConfig {
   double scale = 1.0;  ///< multiplies c_e (1 = the paper's τ_GLS)
 };
 
-enum class Integrator { BackwardEuler };
+enum class Integrator { BackwardEuler, Bdf };
 
 struct NewtonConfig {
   int max_iterations = 25;
@@ -78,11 +78,25 @@ struct NewtonConfig {
   bool reuse_across_steps = true;    ///< keep the factorisation from the previous step
 };
 
+/// Variable-order, variable-step BDF (SUNDIALS IDA).
+struct BdfConfig {
+  double rtol = 1e-4;               ///< relative tolerance of the local error test [-]
+  double atol_displacement = 1e-8;  ///< absolute tolerance on displacements [mm]
+  double atol_pressure = 1e-10;     ///< absolute tolerance on pressures [MPa]
+  int max_order = 5;                ///< 1–5
+  double initial_step = 0.0;        ///< [s]; 0 = IDA's estimate
+  double max_step = 0.0;            ///< [s]; 0 = unlimited
+  long max_steps = 100000;          ///< internal steps allowed between two outputs
+  double delta_cj = 0.25;           ///< relative change of c_j that forces a new factorisation
+  bool step_log = false;            ///< write steps.csv (t, h, order) of every internal step
+};
+
 struct TimeConfig {
   Integrator integrator = Integrator::BackwardEuler;
   double t_end = 32.0;  ///< [s]
-  double dt = 6.4;      ///< [s]
+  double dt = 6.4;      ///< backward Euler step; output interval of BDF [s]
   NewtonConfig newton;
+  BdfConfig bdf;
 };
 
 enum class LinearSolverType { Klu, Umfpack, Mumps };

@@ -43,6 +43,9 @@ class BiphasicProblem {
 
   /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
   void residual(double t, const double* y, const double* ydot, double* F);
+  /// ∂F/∂t at fixed (y, ẏ): the rates of the boundary values and loads (right derivatives of
+  /// the load curves at t).
+  void time_derivative(double t, double* dFdt) const;
   /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz).
   void jacobian(double t, const double* y, const double* ydot, double cj, double* values);
   /// The element kernel's output for element e at the global state (for tests).

@@ -15,20 +15,21 @@
 
 namespace biphasic {
 
-class BackwardEuler {
+class BackwardEuler final : public TimeIntegrator {
  public:
   BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
                 const LinearSolverConfig& linear_solver);
-  ~BackwardEuler();
+  ~BackwardEuler() override;
   BackwardEuler(const BackwardEuler&) = delete;
   BackwardEuler& operator=(const BackwardEuler&) = delete;
 
   /// Integrates from t0 (y = initial state, overwritten with the final one) to time.t_end in
   /// steps of time.dt (the last one shortened to land on t_end). Throws StepFailure.
-  void run(double t0, std::vector<double>& y, const StepObserver& observer);
+  void run(double t0, std::vector<double>& y, const StepObserver& observer) override;
+  int planned_outputs() const override;
 
-  const IntegratorStats& stats() const { return stats_; }
-  const LinearSolverStats& linear_solver_stats() const { return ls_stats_; }
+  const IntegratorStats& stats() const override { return stats_; }
+  const LinearSolverStats& linear_solver_stats() const override { return ls_stats_; }
 
  private:
   struct Impl;

@@ -8,24 +8,31 @@
 
 namespace biphasic {
 
-/// One accepted step, as printed on the terminal and passed to observers.
+/// One accepted step (backward Euler) or one output time (BDF), as printed on the terminal
+/// and passed to observers.
 struct StepInfo {
   int step = 0;     ///< 1-based
   double t = 0.0;   ///< end of the step [s]
   double dt = 0.0;  ///< [s]
   int newton_iterations = 0;
-  int setups = 0;           ///< Jacobian evaluations + factorisations in this step
+  int setups = 0;           ///< Jacobian evaluations (= factorisations) in this step
+  int internal_steps = 0;   ///< BDF: internal steps since the previous output
+  int order = 0;            ///< BDF: order of the last internal step
   double residual_u = 0.0;  ///< ‖R_u‖_∞ over free momentum rows at the solution [N]
   double residual_p = 0.0;  ///< ‖R_p‖_∞ over free mass rows [mm³/s]
 };
 
-/// Counters accumulated over a run.
+/// Counters accumulated over a run (over restarts, for BDF).
 struct IntegratorStats {
   long steps = 0;
   long newton_iterations = 0;
-  long nonlinear_failures = 0;  ///< failed Newton solves that were retried
+  long nonlinear_failures = 0;  ///< failed Newton solves (retried / step reduced)
   long jacobian_evaluations = 0;
   long residual_evaluations = 0;
+  long error_test_failures = 0;    ///< BDF only
+  long restarts = 0;               ///< BDF: re-initialisations at load-curve kinks
+  std::vector<long> order_counts;  ///< BDF: steps taken at order 1..5 (index q − 1)
+  std::vector<double> step_sizes;  ///< BDF: every accepted internal step [s]
 };
 
 /// Called after every accepted step with the solution y at StepInfo::t.
@@ -34,6 +41,21 @@ using StepObserver = std::function<void(const StepInfo&, const std::vector<doubl
 /// A step that could not be completed: names the step, the time and the reason.
 struct StepFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+struct LinearSolverStats;
+
+/// What run_case drives: backward Euler or BDF over one BiphasicProblem.
+class TimeIntegrator {
+ public:
+  virtual ~TimeIntegrator() = default;
+  /// Integrates from t0 (y = a consistent initial state, overwritten with the final one) to
+  /// the configured end time, calling `observer` at each output. Throws StepFailure.
+  virtual void run(double t0, std::vector<double>& y, const StepObserver& observer) = 0;
+  /// Number of observer calls run() will make (for progress lines).
+  virtual int planned_outputs() const = 0;
+  virtual const IntegratorStats& stats() const = 0;
+  virtual const LinearSolverStats& linear_solver_stats() const = 0;
 };
 
 }  // namespace biphasic

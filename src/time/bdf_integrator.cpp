@@ -1,0 +1,328 @@
+#include "biphasic/time/bdf_integrator.hpp"
+
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "biphasic/time/backward_euler.hpp"
+
+namespace biphasic {
+
+namespace {
+
+/// Owning handles of the SUNDIALS objects used for one linear solve or one IDA run.
+struct SundialsContext {
+  SUNContext ctx = nullptr;
+  SundialsContext() {
+    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+  }
+  ~SundialsContext() { SUNContext_Free(&ctx); }
+};
+
+/// A CSC matrix with the problem's pattern.
+SUNMatrix pattern_matrix(const SparsityPattern& pat, SUNContext ctx) {
+  SUNMatrix A = SUNSparseMatrix(pat.size(), pat.size(), pat.nnz(), CSC_MAT, ctx);
+  std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(A));
+  std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(A));
+  return A;
+}
+
+std::string ida_reason(int flag) {
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK:
+      return "too many internal steps (time.bdf.max_steps)";
+    case IDA_TOO_MUCH_ACC:
+      return "the tolerances cannot be met (too small)";
+    case IDA_ERR_FAIL:
+      return "repeated error-test failures (or the minimum step was reached)";
+    case IDA_CONV_FAIL:
+      return "repeated nonlinear convergence failures";
+    case IDA_LSETUP_FAIL:
+      return "factorisation failed";
+    case IDA_LSOLVE_FAIL:
+      return "linear solve failed";
+    case IDA_RES_FAIL:
+      return "residual evaluation failed";
+    case IDA_REP_RES_ERR:
+      return "repeated recoverable residual failures (inverted elements)";
+    default:
+      return "IDA flag " + std::to_string(flag);
+  }
+}
+
+}  // namespace
+
+std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
+                                    const std::vector<double>& y,
+                                    const LinearSolverConfig& solver) {
+  const Index n = problem.size();
+  const SparsityPattern& pat = problem.pattern();
+  const std::vector<char>& fixed = problem.constrained();
+  std::vector<double> zero(n, 0.0), F0(n), dFdt(n), A0(pat.nnz()), A1(pat.nnz());
+  // ∂F/∂y and ∂F/∂y + ∂F/∂ẏ at ẏ = 0 (F is linear in ẏ apart from the GLS geometry).
+  problem.jacobian(t, y.data(), zero.data(), 0.0, A0.data());
+  problem.jacobian(t, y.data(), zero.data(), 1.0, A1.data());
+  problem.residual(t, y.data(), zero.data(), F0.data());
+  problem.time_derivative(t, dFdt.data());
+
+  SundialsContext sc;
+  SUNMatrix M = pattern_matrix(pat, sc.ctx);
+  double* values = SUNSparseMatrix_Data(M);
+  std::vector<double> rhs(n);
+  for (Index i = 0; i < n; ++i) {
+    const bool differentiated = i < problem.num_u() || fixed[i];
+    rhs[i] = differentiated ? -dFdt[i] : -F0[i];
+  }
+  const auto& cp = pat.colptr();
+  const auto& ri = pat.rowind();
+  for (Index j = 0; j < n; ++j)
+    for (Index q = cp[j]; q < cp[j + 1]; ++q) {
+      const Index i = ri[q];
+      const bool differentiated = i < problem.num_u() || fixed[i];
+      values[q] = differentiated ? A0[q] : A1[q] - A0[q];
+    }
+  LinearSolverStats stats;
+  LinearSolverPtr ls = make_linear_solver(solver, sc.ctx, &stats, fill_order(solver, pat));
+  N_Vector x = N_VNew_Serial(n, sc.ctx);
+  N_Vector b = N_VMake_Serial(n, rhs.data(), sc.ctx);
+  const int setup = SUNLinSolSetup(ls.get(), M);
+  const int solve = setup == 0 ? SUNLinSolSolve(ls.get(), M, x, b, 0.0) : setup;
+  std::vector<double> ydot(N_VGetArrayPointer(x), N_VGetArrayPointer(x) + n);
+  N_VDestroy(x);
+  N_VDestroy(b);
+  ls.reset();
+  SUNMatDestroy(M);
+  if (solve != 0)
+    throw StepFailure("consistent initial rate at t = " + std::to_string(t) +
+                      " s: the linear solve failed (flag " + std::to_string(solve) + ")");
+  return ydot;
+}
+
+struct BdfIntegrator::Impl {
+  BiphasicProblem& problem;
+  TimeConfig time;
+  LinearSolverConfig solver;
+  std::string step_log_path;
+  SundialsContext sc;
+  void* ida = nullptr;
+  N_Vector yy = nullptr, yp = nullptr, atol = nullptr, tmp = nullptr;
+  SUNMatrix A = nullptr;
+  LinearSolverPtr ls;
+  std::string failure;
+
+  Impl(BiphasicProblem& p, const TimeConfig& tc, const LinearSolverConfig& lc, std::string log)
+      : problem(p), time(tc), solver(lc), step_log_path(std::move(log)) {}
+  ~Impl() {
+    if (ida) IDAFree(&ida);
+    if (A) SUNMatDestroy(A);
+    ls.reset();
+    for (N_Vector v : {yy, yp, atol, tmp})
+      if (v) N_VDestroy(v);
+  }
+
+  static int residual_fn(realtype t, N_Vector y, N_Vector ydot, N_Vector r, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    try {
+      self->problem.residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot),
+                             N_VGetArrayPointer(r));
+      return 0;
+    } catch (const InvertedElement& e) {
+      self->failure = e.what();
+      return 1;  // recoverable: IDA reduces the step
+    }
+  }
+
+  static int jacobian_fn(realtype t, realtype cj, N_Vector y, N_Vector ydot, N_Vector, SUNMatrix J,
+                         void* data, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(data);
+    const SparsityPattern& pat = self->problem.pattern();
+    // IDA zeroes the sparse matrix, index arrays included: restore the pattern.
+    std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(J));
+    std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(J));
+    try {
+      self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
+                             SUNSparseMatrix_Data(J));
+      return 0;
+    } catch (const InvertedElement& e) {
+      self->failure = e.what();
+      return 1;
+    }
+  }
+};
+
+BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
+                             const LinearSolverConfig& linear_solver, std::string step_log_path)
+    : impl_(std::make_unique<Impl>(problem, time, linear_solver, std::move(step_log_path))) {
+  Impl& m = *impl_;
+  const Index n = problem.size();
+  m.yy = N_VNew_Serial(n, m.sc.ctx);
+  m.yp = N_VNew_Serial(n, m.sc.ctx);
+  m.tmp = N_VNew_Serial(n, m.sc.ctx);
+  m.atol = N_VNew_Serial(n, m.sc.ctx);
+  for (Index i = 0; i < n; ++i)
+    NV_Ith_S(m.atol, i) = i < problem.num_u() ? time.bdf.atol_displacement : time.bdf.atol_pressure;
+  m.A = pattern_matrix(problem.pattern(), m.sc.ctx);
+  m.ls = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
+                            fill_order(linear_solver, problem.pattern()));
+  stats_.order_counts.assign(5, 0);
+}
+
+BdfIntegrator::~BdfIntegrator() = default;
+
+int BdfIntegrator::planned_outputs() const {
+  return std::max(1, static_cast<int>(std::ceil(impl_->time.t_end / impl_->time.dt - 1e-9)));
+}
+
+void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& observer) {
+  Impl& m = *impl_;
+  BiphasicProblem& problem = m.problem;
+  const BdfConfig& bdf = m.time.bdf;
+  const Index n = problem.size();
+  const double t_end = m.time.t_end;
+  std::ofstream step_log;
+  if (bdf.step_log && !m.step_log_path.empty()) {
+    step_log.open(m.step_log_path);
+    step_log << "t,h,order\n";
+    step_log.precision(17);
+  }
+
+  // Breakpoints after t0 (load-curve kinks), then the end.
+  std::vector<double> stops;
+  for (double k : problem.breakpoints())
+    if (k > t0 + 1e-12 * std::max(1.0, t_end) && k < t_end) stops.push_back(k);
+  stops.push_back(t_end);
+
+  auto check = [&](int flag, const char* what) {
+    if (flag < 0) throw std::runtime_error(std::string("IDA set-up failed in ") + what);
+  };
+  // Counters of the current IDA segment, added to the totals at each restart and at the end.
+  auto accumulate = [&] {
+    long v = 0;
+    IDAGetNumSteps(m.ida, &v);
+    stats_.steps += v;
+    IDAGetNumNonlinSolvIters(m.ida, &v);
+    stats_.newton_iterations += v;
+    IDAGetNumNonlinSolvConvFails(m.ida, &v);
+    stats_.nonlinear_failures += v;
+    IDAGetNumErrTestFails(m.ida, &v);
+    stats_.error_test_failures += v;
+  };
+
+  auto start = [&](double t, const std::vector<double>& ys) {
+    const std::vector<double> yd = consistent_rate(problem, t, ys, m.solver);
+    std::copy(ys.begin(), ys.end(), N_VGetArrayPointer(m.yy));
+    std::copy(yd.begin(), yd.end(), N_VGetArrayPointer(m.yp));
+    if (!m.ida) {
+      m.ida = IDACreate(m.sc.ctx);
+      check(IDAInit(m.ida, Impl::residual_fn, t, m.yy, m.yp), "IDAInit");
+      check(IDASVtolerances(m.ida, bdf.rtol, m.atol), "IDASVtolerances");
+      check(IDASetUserData(m.ida, &m), "IDASetUserData");
+      check(IDASetLinearSolver(m.ida, m.ls.get(), m.A), "IDASetLinearSolver");
+      check(IDASetJacFn(m.ida, Impl::jacobian_fn), "IDASetJacFn");
+      check(IDASetMaxOrd(m.ida, bdf.max_order), "IDASetMaxOrd");
+      check(IDASetMaxNumSteps(m.ida, bdf.max_steps), "IDASetMaxNumSteps");
+      if (bdf.max_step > 0) check(IDASetMaxStep(m.ida, bdf.max_step), "IDASetMaxStep");
+      check(IDASetDeltaCjLSetup(m.ida, bdf.delta_cj), "IDASetDeltaCjLSetup");
+      check(IDASetErrHandlerFn(
+                m.ida, [](int, const char*, const char*, char*, void*) {}, nullptr),
+            "IDASetErrHandlerFn");
+    } else {
+      accumulate();
+      ++stats_.restarts;
+      check(IDAReInit(m.ida, t, m.yy, m.yp), "IDAReInit");
+    }
+    if (bdf.initial_step > 0) check(IDASetInitStep(m.ida, bdf.initial_step), "IDASetInitStep");
+  };
+
+  start(t0, y);
+  const int outputs = planned_outputs();
+  auto output_time = [&](int k) { return k == outputs ? t_end : t0 + k * m.time.dt; };
+  // Totals so far: accumulated segments plus the current one (IDAReInit resets its counters).
+  auto totals = [&] {
+    long steps = 0, nni = 0;
+    IDAGetNumSteps(m.ida, &steps);
+    IDAGetNumNonlinSolvIters(m.ida, &nni);
+    return std::pair<long, long>{stats_.steps + steps, stats_.newton_iterations + nni};
+  };
+  std::size_t stop = 0;
+  check(IDASetStopTime(m.ida, stops[stop]), "IDASetStopTime");
+  std::pair<long, long> at_last_output{0, 0};
+  std::vector<double> y_out(n), ydot_out(n), F(n);
+  for (int next_output = 1; next_output <= outputs;) {
+    double tret = t0;
+    m.failure.clear();
+    const int flag = IDASolve(m.ida, stops[stop], &tret, m.yy, m.yp, IDA_ONE_STEP);
+    if (flag < 0) {
+      std::ostringstream msg;
+      double h = 0.0;
+      IDAGetCurrentStep(m.ida, &h);
+      msg << "BDF step at t = " << tret << " s (h = " << h << " s) failed: " << ida_reason(flag);
+      if (!m.failure.empty()) msg << " (" << m.failure << ")";
+      throw StepFailure(msg.str());
+    }
+    double h = 0.0;
+    int q = 0;
+    IDAGetLastStep(m.ida, &h);
+    IDAGetLastOrder(m.ida, &q);
+    stats_.step_sizes.push_back(h);
+    if (q >= 1 && q <= 5) ++stats_.order_counts[q - 1];
+    if (step_log) step_log << tret << ',' << h << ',' << q << '\n';
+    // Outputs passed by this step, by IDA's interpolation.
+    while (next_output <= outputs && output_time(next_output) <= tret + 1e-12 * t_end) {
+      const double to = std::min(output_time(next_output), tret);
+      IDAGetDky(m.ida, to, 0, m.tmp);
+      std::copy_n(N_VGetArrayPointer(m.tmp), n, y_out.begin());
+      IDAGetDky(m.ida, to, 1, m.tmp);
+      std::copy_n(N_VGetArrayPointer(m.tmp), n, ydot_out.begin());
+      const auto now = totals();
+      StepInfo info;
+      info.step = next_output;
+      info.t = to;
+      info.dt = h;
+      info.order = q;
+      info.internal_steps = static_cast<int>(now.first - at_last_output.first);
+      info.newton_iterations = static_cast<int>(now.second - at_last_output.second);
+      at_last_output = now;
+      problem.residual(to, y_out.data(), ydot_out.data(), F.data());
+      const auto& fixed = problem.constrained();
+      for (Index i = 0; i < n; ++i) {
+        if (fixed[i]) continue;
+        double& r = i < problem.num_u() ? info.residual_u : info.residual_p;
+        r = std::max(r, std::abs(F[i]));
+      }
+      if (observer) observer(info, y_out);
+      ++next_output;
+    }
+    if (flag == IDA_TSTOP_RETURN && stop + 1 < stops.size()) {
+      // A kink of a load curve: restart with the rate consistent after it.
+      std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
+      start(tret, y);
+      ++stop;
+      check(IDASetStopTime(m.ida, stops[stop]), "IDASetStopTime");
+    }
+  }
+  std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
+  accumulate();
+  stats_.jacobian_evaluations = problem.stats().jacobian_evaluations;
+  stats_.residual_evaluations = problem.stats().residual_evaluations;
+}
+
+std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, const Config& config,
+                                                     const std::string& output_dir) {
+  switch (config.time.integrator) {
+    case Integrator::BackwardEuler:
+      return std::make_unique<BackwardEuler>(problem, config.time, config.linear_solver);
+    case Integrator::Bdf:
+      return std::make_unique<BdfIntegrator>(
+          problem, config.time, config.linear_solver,
+          output_dir.empty() ? std::string() : output_dir + "/steps.csv");
+  }
+  return nullptr;
+}
+
+}  // namespace biphasic

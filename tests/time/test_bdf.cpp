@@ -1,0 +1,150 @@
+// BDF (IDA) and backward Euler on the same semidiscrete system: consistent start, first-order
+// convergence of backward Euler against a tight BDF solution, and load-curve kinks as stop times.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/study/paper_scene.hpp"
+#include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/bdf_integrator.hpp"
+
+namespace biphasic {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The coarse quarter cylinder shared by the tests (3129 unknowns).
+const Mesh& coarse_mesh() {
+  static const Mesh mesh = generate_quarter_cylinder(paper_reference_config(3.0).mesh.cylinder);
+  return mesh;
+}
+
+std::vector<double> pressures(const BiphasicProblem& problem, const std::vector<double>& y) {
+  return {y.begin() + problem.num_u(), y.end()};
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+std::vector<double> run(Config cfg, Integrator integrator, const std::string& log = {}) {
+  cfg.time.integrator = integrator;
+  BiphasicProblem problem(coarse_mesh(), cfg);
+  std::unique_ptr<TimeIntegrator> ti = make_time_integrator(problem, cfg, log);
+  std::vector<double> y(problem.size(), 0.0);
+  ti->run(0.0, y, nullptr);
+  return pressures(problem, y);
+}
+
+TEST(ConsistentStart, RateSatisfiesTheDifferentiatedSystem) {
+  Config cfg = paper_reference_config(3.0);
+  BiphasicProblem problem(coarse_mesh(), cfg);
+  const Index n = problem.size();
+  std::vector<double> y(n, 0.0);
+  const double t0 = 3.0;  // on the ramp: the top moves at 2.5 µm/s
+  problem.apply_dirichlet(t0, y.data(), nullptr);
+  // A smooth pressure field drives flux in the mass rows (so they have rate terms to balance).
+  const Mesh& mesh = coarse_mesh();
+  for (Index v = 0; v < mesh.num_vertices; ++v)
+    if (!problem.constrained()[problem.pattern().p_dof(v)])
+      y[problem.pattern().p_dof(v)] =
+          0.004 * std::sin(0.4 * mesh.nodes[v][2]) + 1e-4 * mesh.nodes[v][0];
+  const std::vector<double> yd = consistent_rate(problem, t0, y, cfg.linear_solver);
+  std::vector<double> zero(n, 0.0), F(n), Fp(n), Fm(n);
+  // Mass rows: F_p(t0, y0, ẏ0) = 0.
+  problem.residual(t0, y.data(), yd.data(), F.data());
+  // Momentum rows: d/dε F_u(t0 + ε, y0 + ε ẏ0, 0) = 0.
+  const double eps = 1e-4;
+  std::vector<double> yp(n), ym(n);
+  for (Index i = 0; i < n; ++i) {
+    yp[i] = y[i] + eps * yd[i];
+    ym[i] = y[i] - eps * yd[i];
+  }
+  problem.residual(t0 + eps, yp.data(), zero.data(), Fp.data());
+  problem.residual(t0 - eps, ym.data(), zero.data(), Fm.data());
+  double mass = 0.0, momentum = 0.0, mass_scale = 0.0;
+  std::vector<double> Fr(n);
+  problem.residual(t0, y.data(), zero.data(), Fr.data());
+  for (Index i = 0; i < n; ++i) {
+    if (problem.constrained()[i]) continue;
+    if (i < problem.num_u()) {
+      momentum = std::max(momentum, std::abs((Fp[i] - Fm[i]) / (2 * eps)));
+    } else {
+      mass = std::max(mass, std::abs(F[i]));
+      mass_scale = std::max(mass_scale, std::abs(F[i] - Fr[i]));  // size of the rate terms
+    }
+  }
+  EXPECT_GT(mass_scale, 1e-6);
+  EXPECT_LT(mass, 1e-10 * mass_scale);
+  EXPECT_LT(momentum, 1e-9);  // N/s; load rates here are O(1e-3) N/s per node
+  // Dirichlet rows carry the boundary rates: the top moves at −0.08/32 mm/s.
+  const Boundary* top = coarse_mesh().find_boundary("top");
+  ASSERT_NE(top, nullptr);
+  for (const Tri6& f : top->faces)
+    EXPECT_NEAR(yd[problem.pattern().u_dof(f[0], 2)], -0.0025, 1e-15);
+}
+
+TEST(BackwardEuler, ConvergesAtOrderOneAgainstTightBdf) {
+  Config cfg = paper_reference_config(3.0);
+  cfg.time.bdf.rtol = 1e-8;
+  cfg.time.bdf.atol_displacement = 1e-12;
+  cfg.time.bdf.atol_pressure = 1e-14;
+  const std::vector<double> reference = run(cfg, Integrator::Bdf);
+  std::vector<double> errors;
+  for (double dt : {0.64, 0.32, 0.16}) {
+    cfg.time.dt = dt;
+    errors.push_back(max_diff(run(cfg, Integrator::BackwardEuler), reference) / max_abs(reference));
+  }
+  EXPECT_LT(errors.back(), 1e-2);
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    EXPECT_NEAR(errors[i - 1] / errors[i], 2.0, 0.3) << "dt halving " << i;
+}
+
+TEST(Bdf, StopsAtLoadCurveKinkAndMatchesBackwardEuler) {
+  Config cfg = paper_reference_config(3.0);
+  cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {10.0, 0.5}}};  // ramp 10 s, then hold
+  cfg.time.t_end = 20.0;
+  cfg.time.dt = 2.0;
+  cfg.time.bdf.rtol = 1e-6;
+  cfg.time.bdf.step_log = true;
+  const fs::path dir = fs::temp_directory_path() / ("biphasic_bdf_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::vector<double> bdf = run(cfg, Integrator::Bdf, dir.string());
+  // No internal step straddles the kink at t = 10 s; one ends on it.
+  std::ifstream log(dir / "steps.csv");
+  std::string line;
+  std::getline(log, line);
+  EXPECT_EQ(line, "t,h,order");
+  bool lands_on_kink = false;
+  int steps = 0;
+  while (std::getline(log, line)) {
+    double t = 0, h = 0;
+    char comma = 0;
+    std::istringstream(line) >> t >> comma >> h;
+    EXPECT_FALSE(t - h < 10.0 - 1e-9 && t > 10.0 + 1e-9) << "step (" << t - h << ", " << t << "]";
+    lands_on_kink |= std::abs(t - 10.0) < 1e-9;
+    ++steps;
+  }
+  EXPECT_TRUE(lands_on_kink);
+  EXPECT_GT(steps, 5);
+  fs::remove_all(dir);
+  // After the kink the solution relaxes; backward Euler with small steps agrees.
+  cfg.time.dt = 0.05;
+  const std::vector<double> be = run(cfg, Integrator::BackwardEuler);
+  EXPECT_LT(max_diff(be, bdf) / max_abs(bdf), 5e-3);
+}
+
+}  // namespace
+}  // namespace biphasic
