@@ -93,6 +93,17 @@ def main():
                 stab_title="GLS" if stab == "gls" else "no stabilisation")
             (root / name).write_text(text)
             print(root / name)
+    # The reference loading on mesh 1 with GLS integrated by variable-order BDF (IDA), to compare
+    # with mesh1_k1e-3_gls.toml (backward Euler): same scene, outputs at the same times.
+    bdf = TEMPLATE.format(mesh=1, lc=MESHES[1], stab="gls", stab_text="GLS stabilisation",
+                          stab_title="GLS, BDF (IDA)")
+    bdf = bdf.replace('integrator = "backward_euler"\nt_end = 32.0\ndt = 6.4\n',
+                      'integrator = "bdf"\nt_end = 32.0\ndt = 6.4   # output interval\n\n'
+                      '[time.bdf]\nrtol = 1e-5\natol_displacement = 1e-8\natol_pressure = 1e-10\n'
+                      'max_order = 5\nstep_log = true\n')
+    assert 'integrator = "bdf"' in bdf
+    (root / "mesh1_k1e-3_gls_bdf.toml").write_text(bdf)
+    print(root / "mesh1_k1e-3_gls_bdf.toml")
 
 
 if __name__ == "__main__":

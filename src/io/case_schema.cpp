@@ -40,7 +40,8 @@ const Names<int>& component_names() {
 
 const Names<Stabilisation>& stabilisation_names() {
   static const Names<Stabilisation> names{{"none", Stabilisation::None},
-                                          {"gls", Stabilisation::Gls}};
+                                          {"gls", Stabilisation::Gls},
+                                          {"flux_perturbation", Stabilisation::FluxPerturbation}};
   return names;
 }
 

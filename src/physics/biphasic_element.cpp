@@ -14,11 +14,13 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
   const double lambda = params.material.lambda;
   const double k = params.permeability;
   const double ce = params.gls_c;
+  const double beta_f = params.flux_beta;
 
   // Nodal displacement and velocity as 10 × 3, pressure as 4-vector.
   const Eigen::Map<const Eigen::Matrix<double, 3, 10>> u(y.data());
   const Eigen::Map<const Eigen::Matrix<double, 3, 10>> v(ydot.data());
   const Eigen::Vector4d p = y.tail<4>();
+  const Eigen::Vector4d pdot = ydot.tail<4>();
 
   out.residual.setZero();
   if (with_jacobian) {
@@ -35,8 +37,9 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
     const Mat10x3 b = g.dN * Finv;  // b_a = F⁻ᵀ∇₀N_a = ∇ₓN_a
     const Mat4x3 e = g.dNp * Finv;  // e_c = ∇ₓN^p_c
     const double pq = g.Np.dot(p);
-    const Vec3 gp = e.transpose() * p;  // ∇ₓp
-    const Mat3 L = Fdot * Finv;         // velocity gradient
+    const Vec3 gp = e.transpose() * p;        // ∇ₓp
+    const Vec3 gpdot = e.transpose() * pdot;  // ∇ₓṗ
+    const Mat3 L = Fdot * Finv;               // velocity gradient
     const double divv = L.trace();
     const double Jdot = J * divv;
     const double beta = lambda * std::log(J) - mu - pq * J;
@@ -49,7 +52,7 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
       for (int i = 0; i < 3; ++i) out.residual(3 * a + i) += w * Ru(a, i);
     // Mass rows.
     for (int c = 0; c < 4; ++c)
-      out.residual(30 + c) += w * (g.Np(c) * Jdot + k * J * e.row(c).dot(gp));
+      out.residual(30 + c) += w * (g.Np(c) * Jdot + J * e.row(c).dot(k * gp + beta_f * gpdot));
 
     if (!with_jacobian) continue;
 
@@ -73,18 +76,24 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
       for (int c = 0; c < 4; ++c)
         for (int i = 0; i < 3; ++i) out.dfdy(3 * a + i, 30 + c) -= w * g.Np(c) * J * b(a, i);
     }
+    // Darcy flux and flux perturbation share one form: J (F⁻ᵀ∇₀q)·(F⁻ᵀ∇₀g), q = k p + β ṗ.
+    const Vec3 gq = k * gp + beta_f * gpdot;
     for (int c = 0; c < 4; ++c) {
-      const double ecgp = e.row(c).dot(gp);
+      const double ecgq = e.row(c).dot(gq);
       for (int bn = 0; bn < 10; ++bn) {
         const double bec = b.row(bn).dot(e.row(c));
-        const double bgp = b.row(bn).dot(gp);
+        const double bgq = b.row(bn).dot(gq);
         for (int kk = 0; kk < 3; ++kk) {
-          const double flux = k * J * (b(bn, kk) * ecgp - gp(kk) * bec - e(c, kk) * bgp);
+          const double flux = J * (b(bn, kk) * ecgq - gq(kk) * bec - e(c, kk) * bgq);
           out.dfdy(30 + c, 3 * bn + kk) += w * (g.Np(c) * dJdot(bn, kk) + flux);
           out.dfdydot(30 + c, 3 * bn + kk) += w * g.Np(c) * J * b(bn, kk);
         }
       }
-      for (int d = 0; d < 4; ++d) out.dfdy(30 + c, 30 + d) += w * k * J * e.row(c).dot(e.row(d));
+      for (int d = 0; d < 4; ++d) {
+        const double ee = J * e.row(c).dot(e.row(d));
+        out.dfdy(30 + c, 30 + d) += w * k * ee;
+        out.dfdydot(30 + c, 30 + d) += w * beta_f * ee;
+      }
     }
   }
 }

@@ -93,7 +93,10 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
   geometry_.resize(mesh.tets.size());
   const bool gls = config.stabilisation.type == Stabilisation::Gls;
+  const bool flux = config.stabilisation.type == Stabilisation::FluxPerturbation;
   if (gls) gls_c_.resize(mesh.tets.size());
+  if (flux) flux_beta_.resize(mesh.tets.size());
+  const double HA = config.material.lambda + 2.0 * config.material.mu;
   double mean_length = 0.0;
   for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
     Eigen::Matrix<double, 10, 3> X;
@@ -105,13 +108,14 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     }
     const TetCorners x = corners(mesh, mesh.tets[e]);
     mean_length += tet_volume_diameter(x);
-    if (gls) {
+    if (gls || flux) {
       const double h = element_length(x, config.stabilisation.length);
-      gls_c_[e] = config.stabilisation.scale * h * h / (4.0 * config.material.permeability);
+      const double h2 = config.stabilisation.scale * h * h;
+      if (gls) gls_c_[e] = h2 / (4.0 * config.material.permeability);
+      if (flux) flux_beta_[e] = h2 / (4.0 * HA);
     }
   }
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
-  const double HA = config.material.lambda + 2.0 * config.material.mu;
   row_scale_u_ = HA * mean_length;
   row_scale_p_ = config.material.permeability * mean_length;
 
@@ -241,6 +245,7 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
   gather(e, y, ydot, ye, ydote);
   ElementParameters p = params_;
   p.gls_c = gls_coefficient(e);
+  p.flux_beta = flux_perturbation(e);
   try {
     biphasic_element(geometry_[e], p, ye, ydote, with_jacobian, out);
   } catch (const std::domain_error& err) {

@@ -34,7 +34,9 @@ ElementMatrix central_difference(const std::vector<PointGeometry>& geo, const El
   return D;
 }
 
-class ElementJacobian : public ::testing::TestWithParam<double> {};
+/// (GLS coefficient c_e, flux-perturbation β).
+using Stabilisations = std::pair<double, double>;
+class ElementJacobian : public ::testing::TestWithParam<Stabilisations> {};
 
 // For each block: the central-difference error falls as ε² (ratio ≈ 4 per halving), or is
 // already at round-off because the residual is linear in those unknowns.
@@ -44,7 +46,8 @@ TEST_P(ElementJacobian, MatchesCentralDifferencesBlockByBlock) {
   ElementParameters p;
   p.material = {0.2, 0.5};
   p.permeability = 1e-2;
-  p.gls_c = GetParam();
+  p.gls_c = GetParam().first;
+  p.flux_beta = GetParam().second;
   ElementVector y, ydot;
   test::random_state(7, 0.08, y, ydot);
   ElementOutput exact;
@@ -74,7 +77,8 @@ TEST_P(ElementJacobian, BackwardEulerCombinationMatchesDifferences) {
   element_point_geometry(test::distorted_tet(), tet_quadrature(4), geo);
   ElementParameters p;
   p.permeability = 1e-3;
-  p.gls_c = GetParam();
+  p.gls_c = GetParam().first;
+  p.flux_beta = GetParam().second;
   ElementVector y, ydot, y_old;
   test::random_state(11, 0.05, y, ydot);
   test::random_state(12, 0.05, y_old, ydot);
@@ -98,9 +102,12 @@ TEST_P(ElementJacobian, BackwardEulerCombinationMatchesDifferences) {
   EXPECT_LT((D - A).norm() / A.norm(), 1e-7);
 }
 
-INSTANTIATE_TEST_SUITE_P(WithAndWithoutGls, ElementJacobian, ::testing::Values(0.0, 2.5),
+INSTANTIATE_TEST_SUITE_P(Stabilisations, ElementJacobian,
+                         ::testing::Values(Stabilisations{0.0, 0.0}, Stabilisations{2.5, 0.0},
+                                           Stabilisations{0.0, 0.35}),
                          [](const auto& param_info) {
-                           return param_info.param == 0.0 ? "plain" : "gls";
+                           if (param_info.param.first != 0.0) return "gls";
+                           return param_info.param.second != 0.0 ? "flux_perturbation" : "plain";
                          });
 
 }  // namespace

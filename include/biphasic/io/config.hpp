@@ -54,14 +54,17 @@ struct BoundaryCondition {
   std::string curve;               ///< load-curve name; empty = constant 1
 };
 
-enum class Stabilisation { None, Gls };
+/// Gls: the paper's semidiscrete GLS term, c_e = scale · h²/(4k).
+/// FluxPerturbation: Aguilar et al. 2008 (FEBio's tau), w = −k∇(p + τṗ), β = kτ = scale · h²/(4
+/// H_A).
+enum class Stabilisation { None, Gls, FluxPerturbation };
 /// Element length h in c_e = h²/(4k): the paper uses the circumsphere radius.
 enum class ElementLength { Circumradius, ShortestEdge, LongestEdge, VolumeDiameter };
 
 struct StabilisationConfig {
   Stabilisation type = Stabilisation::None;
   ElementLength length = ElementLength::Circumradius;
-  double scale = 1.0;  ///< multiplies c_e (1 = the paper's τ_GLS)
+  double scale = 1.0;  ///< multiplies c_e or β (1 = the published coefficients)
 };
 
 enum class Integrator { BackwardEuler, Bdf };

@@ -58,6 +58,8 @@ class BiphasicProblem {
   std::vector<double> breakpoints() const;
   /// c_e = scale · h_e² / (4k) of element e (0 without GLS) [MPa s].
   double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
+  /// β = scale · h_e² / (4 H_A) of the flux perturbation (0 without it) [mm⁴ N⁻¹].
+  double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
 
   AssemblyStats& stats() { return stats_; }
 
@@ -85,6 +87,7 @@ class BiphasicProblem {
   ElementParameters params_;
   std::vector<std::vector<PointGeometry>> geometry_;
   std::vector<double> gls_c_;
+  std::vector<double> flux_beta_;
   SparsityPattern pattern_;
   std::vector<std::vector<Index>> colours_;  ///< elements sharing no node, per colour
   std::vector<Dirichlet> dirichlet_;
