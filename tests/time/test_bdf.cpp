@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../common/box_mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/study/paper_scene.hpp"
 #include "biphasic/time/backward_euler.hpp"
@@ -144,6 +145,53 @@ TEST(Bdf, StopsAtLoadCurveKinkAndMatchesBackwardEuler) {
   cfg.time.dt = 0.05;
   const std::vector<double> be = run(cfg, Integrator::BackwardEuler);
   EXPECT_LT(max_diff(be, bdf) / max_abs(bdf), 5e-3);
+}
+
+// IDA limited to maximum order q converges at order q: under tolerance proportionality the
+// error against a tight reference falls as N^(−q) with the number of steps N. Confined
+// consolidation of a column (1 × 1 × 4 mm, 8 cells), drained top, ramp loading.
+TEST(Bdf, ConvergesAtItsMaximumOrder) {
+  const Mesh mesh = test::box_mesh({1, 1, 8}, {1.0, 1.0, 4.0});
+  Config cfg;
+  cfg.material = {0.2, 0.5, 1e-2};
+  cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {100.0, 1.0}}};
+  cfg.bcs = {{BcType::Displacement, "z1", 2, -0.2, {}, "ramp"},
+             {BcType::Displacement, "z0", 2, 0.0, {}, ""},
+             {BcType::Symmetry, "x0", 0, 0.0, {}, ""},
+             {BcType::Symmetry, "x1", 0, 0.0, {}, ""},
+             {BcType::Symmetry, "y0", 0, 0.0, {}, ""},
+             {BcType::Symmetry, "y1", 0, 0.0, {}, ""},
+             {BcType::Pressure, "z1", 0, 0.0, {}, ""}};
+  cfg.time.integrator = Integrator::Bdf;
+  cfg.time.t_end = cfg.time.dt = 20.0;
+  auto solve = [&](double rtol, int q) {
+    Config c = cfg;
+    c.time.bdf.rtol = rtol;
+    c.time.bdf.atol_displacement = 1e-3 * rtol;  // mm
+    c.time.bdf.atol_pressure = 1e-4 * rtol;      // MPa
+    c.time.bdf.max_order = q;
+    BiphasicProblem problem(mesh, c);
+    BdfIntegrator bdf(problem, c.time, c.linear_solver);
+    std::vector<double> y(problem.size(), 0.0);
+    bdf.run(0.0, y, nullptr);
+    return std::make_pair(pressures(problem, y), bdf.stats().steps);
+  };
+  const std::vector<double> reference = solve(1e-9, 5).first;
+  for (int q : {1, 2, 3}) {
+    // Least-squares slope of log(error) against log(steps) over three tolerances.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (double rtol : {1e-4, 1e-5, 1e-6}) {
+      const auto [p, steps] = solve(rtol, q);
+      const double x = std::log(static_cast<double>(steps));
+      const double yv = std::log(max_diff(p, reference) / max_abs(reference));
+      sx += x;
+      sy += yv;
+      sxx += x * x;
+      sxy += x * yv;
+    }
+    const double slope = (3 * sxy - sx * sy) / (3 * sxx - sx * sx);
+    EXPECT_NEAR(-slope, q, 0.4) << "maximum order " << q;
+  }
 }
 
 }  // namespace
