@@ -165,8 +165,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
   double* fs = N_VGetArrayPointer(m.fscale);
   std::vector<double> F(n);
   bool have_factorisation = false;
-  bool have_previous = false;  // y_previous, dt_previous hold the state before the last step
-  std::vector<double> y_previous;
+  std::vector<double> y_previous;  // state before the last step (empty before the first)
   double dt_previous = 0.0;
 
   double t = t0;
@@ -190,7 +189,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     // Dirichlet rows carry the boundary increment in on the first iteration, which converges
     // far better than the predictor's distorted boundary layer when GLS is strong.
     auto initial_guess = [&] {
-      if (!have_previous) {
+      if (y_previous.empty()) {
         std::copy(y.begin(), y.end(), yv);
         return;
       }
@@ -203,7 +202,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     int flag = 0;
     long iterations = 0;
     // Attempts: (1) reuse the factorisation (modified Newton); (2) fresh Jacobian every
-    // iteration; (3) full Newton with a line search. Each restarts from the predictor.
+    // iteration; (3) full Newton with a line search. Each restarts from the initial guess.
     for (int attempt = 0; attempt < 3; ++attempt) {
       const bool reuse = attempt == 0 && have_factorisation && newton.reuse_across_steps;
       if (attempt == 0 && !reuse && newton.max_setup_calls == 1) continue;  // same as (2)
@@ -230,7 +229,6 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     have_factorisation = true;
     y_previous = y;
     dt_previous = m.dt;
-    have_previous = true;
     std::copy(yv, yv + n, y.begin());
     t = t_next;
 
