@@ -151,7 +151,7 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
 BackwardEuler::~BackwardEuler() = default;
 
 int BackwardEuler::planned_outputs() const {
-  return std::max(1, static_cast<int>(std::ceil(impl_->time.t_end / impl_->time.dt - 1e-9)));
+  return interval_count(impl_->time.t_end, impl_->time.dt);
 }
 
 void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
@@ -160,7 +160,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
   const NewtonConfig& newton = m.time.newton;
   const Index n = problem.size();
   const double t_end = m.time.t_end;
-  const int num_steps = std::max(1, static_cast<int>(std::ceil((t_end - t0) / m.time.dt - 1e-9)));
+  const int num_steps = interval_count(t_end - t0, m.time.dt);
   double* yv = N_VGetArrayPointer(m.y);
   double* fs = N_VGetArrayPointer(m.fscale);
   std::vector<double> F(n);

@@ -175,7 +175,7 @@ BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
 BdfIntegrator::~BdfIntegrator() = default;
 
 int BdfIntegrator::planned_outputs() const {
-  return std::max(1, static_cast<int>(std::ceil(impl_->time.t_end / impl_->time.dt - 1e-9)));
+  return interval_count(impl_->time.t_end, impl_->time.dt);
 }
 
 void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& observer) {

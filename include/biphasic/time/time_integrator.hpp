@@ -1,6 +1,8 @@
 // What every time integrator reports and how it hands results to observers.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -44,6 +46,11 @@ struct StepFailure : std::runtime_error {
 };
 
 struct LinearSolverStats;
+
+/// Number of intervals of length dt in [0, t_end], the last one shortened to land on t_end.
+inline int interval_count(double t_end, double dt) {
+  return std::max(1, static_cast<int>(std::ceil(t_end / dt - 1e-9)));
+}
 
 /// What run_case drives: backward Euler or BDF over one BiphasicProblem.
 class TimeIntegrator {
