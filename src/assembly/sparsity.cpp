@@ -1,6 +1,7 @@
 #include "biphasic/assembly/sparsity.hpp"
 
 #include <metis.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -65,6 +66,18 @@ SparsityPattern::SparsityPattern(const Mesh& mesh)
             static_cast<std::int32_t>(std::lower_bound(begin, end, t[b]) - begin);
     }
   }
+}
+
+SUNMatrix SparsityPattern::new_matrix(SUNContext ctx) const {
+  SUNMatrix A = SUNSparseMatrix(num_dofs_, num_dofs_, nnz(), CSC_MAT, ctx);
+  if (!A) throw std::runtime_error("SUNSparseMatrix failed");
+  restore_into(A);
+  return A;
+}
+
+void SparsityPattern::restore_into(SUNMatrix A) const {
+  std::copy(colptr_.begin(), colptr_.end(), SUNSparseMatrix_IndexPointers(A));
+  std::copy(rowind_.begin(), rowind_.end(), SUNSparseMatrix_IndexValues(A));
 }
 
 Index SparsityPattern::find(Index row, Index col) const {

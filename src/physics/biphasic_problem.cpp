@@ -299,6 +299,16 @@ void BiphasicProblem::residual(double t, const double* y, const double* ydot, do
   stats_.residual_seconds += seconds_since(t0);
 }
 
+std::pair<double, double> BiphasicProblem::field_norms(const double* F) const {
+  double ru = 0.0, rp = 0.0;
+  for (Index i = 0; i < size(); ++i) {
+    if (constrained_[i]) continue;
+    double& r = i < num_u() ? ru : rp;
+    r = std::max(r, std::abs(F[i]));
+  }
+  return {ru, rp};
+}
+
 void BiphasicProblem::time_derivative(double t, double* dFdt) const {
   std::fill(dFdt, dFdt + size(), 0.0);
   for (const NodalLoad& l : loads_) {

@@ -83,10 +83,7 @@ struct BackwardEuler::Impl {
 
   static int jacobian_fn(N_Vector yv, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
-    const SparsityPattern& pat = self->problem.pattern();
-    // KINSOL zeroes the whole sparse matrix, index arrays included: restore the pattern.
-    std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(J));
-    std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(J));
+    self->problem.pattern().restore_into(J);
     try {
       self->rate(N_VGetArrayPointer(yv));
       self->problem.jacobian(self->t, N_VGetArrayPointer(yv), self->ydot.data(), 1.0 / self->dt,
@@ -96,17 +93,6 @@ struct BackwardEuler::Impl {
       self->failure = e.what();
       return 1;
     }
-  }
-
-  /// ‖F‖_∞ over free momentum rows and over free mass rows.
-  std::pair<double, double> field_norms(const std::vector<double>& F) const {
-    double ru = 0.0, rp = 0.0;
-    const auto& fixed = problem.constrained();
-    for (Index i = 0; i < problem.size(); ++i) {
-      if (fixed[i]) continue;
-      (i < problem.num_u() ? ru : rp) = std::max(i < problem.num_u() ? ru : rp, std::abs(F[i]));
-    }
-    return {ru, rp};
   }
 };
 
@@ -121,7 +107,7 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
   m.uscale = N_VNew_Serial(n, m.ctx);
   m.fscale = N_VNew_Serial(n, m.ctx);
   N_VConst(1.0, m.uscale);
-  m.A = SUNSparseMatrix(n, n, pat.nnz(), CSC_MAT, m.ctx);
+  m.A = pat.new_matrix(m.ctx);
   m.ls = make_linear_solver(linear_solver, m.ctx, &ls_stats_, fill_order(linear_solver, pat));
   m.y_old.assign(n, 0.0);
   m.ydot.assign(n, 0.0);
@@ -180,7 +166,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     problem.apply_dirichlet(t_next, yv, nullptr);
     m.rate(yv);
     problem.residual(t_next, yv, m.ydot.data(), F.data());
-    const auto [ru0, rp0] = m.field_norms(F);
+    const auto [ru0, rp0] = problem.field_norms(F.data());
     const double su = 1.0 / std::max(newton.rtol_displacement * ru0, newton.atol_displacement);
     const double sp = 1.0 / std::max(newton.rtol_pressure * rp0, newton.atol_pressure);
     for (Index i = 0; i < n; ++i) fs[i] = i < problem.num_u() ? su : sp;
@@ -218,7 +204,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       ++stats_.nonlinear_failures;
     }
     if (flag < 0) {
-      const auto [ru, rp] = m.field_norms(m.last_residual);
+      const auto [ru, rp] = problem.field_norms(m.last_residual.data());
       std::ostringstream msg;
       msg << "backward Euler step " << step << " (t = " << t_next << " s, dt = " << m.dt
           << " s) failed: " << kinsol_reason(flag);
@@ -238,7 +224,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     info.dt = m.dt;
     info.newton_iterations = static_cast<int>(iterations);
     info.setups = static_cast<int>(problem.stats().jacobian_evaluations - jac_before);
-    std::tie(info.residual_u, info.residual_p) = m.field_norms(m.last_residual);
+    std::tie(info.residual_u, info.residual_p) = problem.field_norms(m.last_residual.data());
     ++stats_.steps;
     stats_.newton_iterations += iterations;
     if (observer) observer(info, y);

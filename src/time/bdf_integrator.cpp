@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "biphasic/time/backward_euler.hpp"
 
@@ -23,14 +24,6 @@ struct SundialsContext {
   }
   ~SundialsContext() { SUNContext_Free(&ctx); }
 };
-
-/// A CSC matrix with the problem's pattern.
-SUNMatrix pattern_matrix(const SparsityPattern& pat, SUNContext ctx) {
-  SUNMatrix A = SUNSparseMatrix(pat.size(), pat.size(), pat.nnz(), CSC_MAT, ctx);
-  std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(A));
-  std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(A));
-  return A;
-}
 
 std::string ida_reason(int flag) {
   switch (flag) {
@@ -71,7 +64,7 @@ std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
   problem.time_derivative(t, dFdt.data());
 
   SundialsContext sc;
-  SUNMatrix M = pattern_matrix(pat, sc.ctx);
+  SUNMatrix M = pat.new_matrix(sc.ctx);
   double* values = SUNSparseMatrix_Data(M);
   std::vector<double> rhs(n);
   for (Index i = 0; i < n; ++i) {
@@ -140,10 +133,7 @@ struct BdfIntegrator::Impl {
   static int jacobian_fn(realtype t, realtype cj, N_Vector y, N_Vector ydot, N_Vector, SUNMatrix J,
                          void* data, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
-    const SparsityPattern& pat = self->problem.pattern();
-    // IDA zeroes the sparse matrix, index arrays included: restore the pattern.
-    std::copy(pat.colptr().begin(), pat.colptr().end(), SUNSparseMatrix_IndexPointers(J));
-    std::copy(pat.rowind().begin(), pat.rowind().end(), SUNSparseMatrix_IndexValues(J));
+    self->problem.pattern().restore_into(J);
     try {
       self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
                              SUNSparseMatrix_Data(J));
@@ -166,7 +156,7 @@ BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
   m.atol = N_VNew_Serial(n, m.sc.ctx);
   for (Index i = 0; i < n; ++i)
     NV_Ith_S(m.atol, i) = i < problem.num_u() ? time.bdf.atol_displacement : time.bdf.atol_pressure;
-  m.A = pattern_matrix(problem.pattern(), m.sc.ctx);
+  m.A = problem.pattern().new_matrix(m.sc.ctx);
   m.ls = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
                             fill_order(linear_solver, problem.pattern()));
   stats_.order_counts.assign(5, 0);
@@ -289,12 +279,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       info.newton_iterations = static_cast<int>(now.second - at_last_output.second);
       at_last_output = now;
       problem.residual(to, y_out.data(), ydot_out.data(), F.data());
-      const auto& fixed = problem.constrained();
-      for (Index i = 0; i < n; ++i) {
-        if (fixed[i]) continue;
-        double& r = i < problem.num_u() ? info.residual_u : info.residual_p;
-        r = std::max(r, std::abs(F[i]));
-      }
+      std::tie(info.residual_u, info.residual_p) = problem.field_norms(F.data());
       if (observer) observer(info, y_out);
       ++next_output;
     }

@@ -38,11 +38,7 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
   std::vector<double> y(n, 0.0), ydot(n, 0.0);
   SUNContext ctx;
   ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
-  SUNMatrix A = SUNSparseMatrix(n, n, problem.pattern().nnz(), CSC_MAT, ctx);
-  std::copy(problem.pattern().colptr().begin(), problem.pattern().colptr().end(),
-            SUNSparseMatrix_IndexPointers(A));
-  std::copy(problem.pattern().rowind().begin(), problem.pattern().rowind().end(),
-            SUNSparseMatrix_IndexValues(A));
+  SUNMatrix A = problem.pattern().new_matrix(ctx);
   problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
 
   LinearSolverStats stats;

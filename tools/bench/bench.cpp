@@ -72,11 +72,7 @@ std::string measure(double lc, const std::string& solver_name, int repeat) {
   std::vector<double> t_res, t_jac;
   SUNContext ctx;
   SUNContext_Create(nullptr, &ctx);
-  SUNMatrix A = SUNSparseMatrix(n, n, problem.pattern().nnz(), CSC_MAT, ctx);
-  std::copy(problem.pattern().colptr().begin(), problem.pattern().colptr().end(),
-            SUNSparseMatrix_IndexPointers(A));
-  std::copy(problem.pattern().rowind().begin(), problem.pattern().rowind().end(),
-            SUNSparseMatrix_IndexValues(A));
+  SUNMatrix A = problem.pattern().new_matrix(ctx);
   for (int r = 0; r < repeat; ++r) {
     auto t0 = Clock::now();
     problem.residual(32.0, y.data(), ydot.data(), F.data());

@@ -1,6 +1,9 @@
 // Degrees of freedom and the fixed CSC pattern of the P2/P1 system, built once per mesh.
 #pragma once
 
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_matrix.h>
+
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -39,6 +42,12 @@ class SparsityPattern {
   /// times smaller than the matrix graph), each node's unknowns kept together.
   /// order[k] = unknown placed k-th.
   std::vector<Index> nested_dissection_order() const;
+
+  /// A new SUNSparseMatrix (CSC) holding this pattern, values zero; the caller destroys it.
+  SUNMatrix new_matrix(SUNContext ctx) const;
+  /// Writes the pattern's index arrays into A (KINSOL and IDA zero them with the values
+  /// before every Jacobian call).
+  void restore_into(SUNMatrix A) const;
 
   /// Position in the value array of entry (row, col); −1 if outside the pattern.
   Index find(Index row, Index col) const;

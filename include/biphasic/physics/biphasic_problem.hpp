@@ -43,6 +43,8 @@ class BiphasicProblem {
 
   /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
   void residual(double t, const double* y, const double* ydot, double* F);
+  /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].
+  std::pair<double, double> field_norms(const double* F) const;
   /// ∂F/∂t at fixed (y, ẏ): the rates of the boundary values and loads (right derivatives of
   /// the load curves at t).
   void time_derivative(double t, double* dFdt) const;
