@@ -229,8 +229,6 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     stats_.newton_iterations += iterations;
     if (observer) observer(info, y);
   }
-  stats_.jacobian_evaluations = problem.stats().jacobian_evaluations;
-  stats_.residual_evaluations = problem.stats().residual_evaluations;
 }
 
 }  // namespace biphasic

@@ -293,8 +293,6 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
   }
   std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
   accumulate();
-  stats_.jacobian_evaluations = problem.stats().jacobian_evaluations;
-  stats_.residual_evaluations = problem.stats().residual_evaluations;
 }
 
 std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, const Config& config,

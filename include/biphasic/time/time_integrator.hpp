@@ -24,13 +24,12 @@ struct StepInfo {
   double residual_p = 0.0;  ///< ‖R_p‖_∞ over free mass rows [mm³/s]
 };
 
-/// Counters accumulated over a run (over restarts, for BDF).
+/// Counters accumulated over a run (over restarts, for BDF). Residual and Jacobian evaluations
+/// are counted by the problem itself (AssemblyStats).
 struct IntegratorStats {
   long steps = 0;
   long newton_iterations = 0;
   long nonlinear_failures = 0;  ///< failed Newton solves (retried / step reduced)
-  long jacobian_evaluations = 0;
-  long residual_evaluations = 0;
   long error_test_failures = 0;    ///< BDF only
   long restarts = 0;               ///< BDF: re-initialisations at load-curve kinks
   std::vector<long> order_counts;  ///< BDF: steps taken at order 1..5 (index q − 1)
