@@ -1,4 +1,5 @@
-// Meshes from gmsh: the generated quarter cylinder and .msh files (formats 2.2 and 4.1).
+// Meshes from gmsh: the generated quarter cylinder, .msh files (formats 2.2 and 4.1), and the
+// gmsh meshing shared by the generators (generator_support.hpp).
 #include <gmsh.h>
 
 #include <algorithm>
@@ -7,12 +8,14 @@
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <mutex>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -22,6 +25,7 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "generator_support.hpp"
 
 namespace biphasic {
 
@@ -384,41 +388,22 @@ void check_single_order(const std::set<int>& types) {
 }
 
 void validate(const QuarterCylinderSpec& spec) {
-  const auto positive = [](const char* what, double value) {
-    if (!(std::isfinite(value) && value > 0.0)) {
-      std::ostringstream msg;
-      msg << what << " must be positive and finite, got " << value;
-      throw std::runtime_error(msg.str());
-    }
-  };
-  positive("radius", spec.radius);
-  positive("height", spec.height);
-  positive("lc", spec.lc);
-  if (!(std::isfinite(spec.grading_ratio) && spec.grading_ratio >= 1.0)) {
-    std::ostringstream msg;
-    msg << "grading_ratio must be >= 1, got " << spec.grading_ratio;
-    throw std::runtime_error(msg.str());
+  detail::require_positive("radius", spec.radius);
+  detail::require_positive("height", spec.height);
+  detail::require_positive("lc", spec.lc);
+  detail::require_at_least_one("grading_ratio", spec.grading_ratio);
+  if (!spec.grading_faces.empty()) {
+    detail::require_positive("grading_distance", spec.grading_distance);
   }
-  if (!spec.grading_faces.empty()) positive("grading_distance", spec.grading_distance);
-  for (const std::string& name : spec.grading_faces) {
-    if (std::find(kCylinderFaces.begin(), kCylinderFaces.end(), name) == kCylinderFaces.end()) {
-      std::string valid;
-      for (const char* face : kCylinderFaces)
-        valid += (valid.empty() ? "" : ", ") + std::string(face);
-      throw std::runtime_error("unknown grading face '" + name + "' (valid names: " + valid + ")");
-    }
-  }
+  detail::require_known_faces(spec.grading_faces, kCylinderFaces);
 }
 
 // Surface tags of the quarter cylinder, indexed like kCylinderFaces, found from bounding boxes.
-std::array<int, 5> classify_cylinder_faces(const QuarterCylinderSpec& spec) {
+std::vector<int> classify_cylinder_faces(const QuarterCylinderSpec& spec) {
   const double tol = 1e-6 * std::max(spec.radius, spec.height);
-  std::array<int, 5> tags{-1, -1, -1, -1, -1};
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  for (const auto& [dim, tag] : surfaces) {
+  return detail::classify_surfaces(kCylinderFaces, "quarter-cylinder", [&](int tag) {
     double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
-    gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+    gmsh::model::getBoundingBox(2, tag, x0, y0, z0, x1, y1, z1);
     std::size_t face = 2;  // lateral unless flat in one coordinate
     if (z1 - z0 < tol) {
       face = std::abs(z0) < tol ? 0 : (std::abs(z0 - spec.height) < tol ? 1 : 5);
@@ -427,110 +412,133 @@ std::array<int, 5> classify_cylinder_faces(const QuarterCylinderSpec& spec) {
     } else if (y1 - y0 < tol) {
       face = std::abs(y0) < tol ? 4 : 5;
     }
-    if (face == 5 || tags[face] != -1) {
-      throw std::runtime_error("unexpected surface " + std::to_string(tag) +
-                               " in the quarter-cylinder geometry");
+    return face;
+  });
+}
+
+}  // namespace
+
+namespace detail {
+
+Mesh mesh_with_gmsh(const GmshSizing& sizing, const std::string& write_msh,
+                    const std::function<std::vector<int>()>& build) {
+  GmshSession session;
+  const std::vector<int> graded_surfaces = build();
+  const bool graded = !graded_surfaces.empty() && sizing.grading_ratio > 1.0;
+  const double fine = graded ? sizing.lc / sizing.grading_ratio : sizing.lc;
+  session.set_number("General.NumThreads", 1);
+  session.set_number("Mesh.MaxNumThreads1D", 1);
+  session.set_number("Mesh.MaxNumThreads2D", 1);
+  session.set_number("Mesh.MaxNumThreads3D", 1);
+  session.set_number("Mesh.Algorithm", 6);    // Frontal-Delaunay on surfaces
+  session.set_number("Mesh.Algorithm3D", 1);  // Delaunay in the volume
+  session.set_number("Mesh.RandomSeed", 1);
+  session.set_number("Mesh.Optimize", 1);
+  session.set_number("Mesh.OptimizeNetgen", 0);
+  session.set_number("Mesh.ElementOrder", 1);
+  session.set_number("Mesh.SecondOrderLinear", 0);
+  session.set_number("Mesh.HighOrderOptimize", 0);
+  session.set_number("Mesh.MeshSizeFactor", 1);
+  session.set_number("Mesh.MeshSizeFromCurvature", 0);
+  session.set_number("Mesh.MeshSizeFromPoints", 0);
+  // gmsh's default (sizes interpolated from the surface mesh into the volume) for uniform
+  // meshes; off when graded, where it would spread the fine face size through the volume.
+  session.set_number("Mesh.MeshSizeExtendFromBoundary", graded ? 0 : 1);
+  session.set_number("Mesh.MeshSizeMin", fine);
+  session.set_number("Mesh.MeshSizeMax", sizing.lc);
+
+  if (graded) {
+    // Sample each surface densely enough (half the fine size along its longest side) for the
+    // distance to be accurate where the size matters.
+    const double samples = std::ceil(2.0 * sizing.longest_side / fine) + 1.0;
+    const int distance = gmsh::model::mesh::field::add("Distance");
+    gmsh::model::mesh::field::setNumbers(
+        distance, "SurfacesList",
+        std::vector<double>(graded_surfaces.begin(), graded_surfaces.end()));
+    gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
+    const int threshold = gmsh::model::mesh::field::add("Threshold");
+    gmsh::model::mesh::field::setNumber(threshold, "InField", distance);
+    gmsh::model::mesh::field::setNumber(threshold, "SizeMin", fine);
+    gmsh::model::mesh::field::setNumber(threshold, "SizeMax", sizing.lc);
+    gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0.0);
+    gmsh::model::mesh::field::setNumber(threshold, "DistMax", sizing.grading_distance);
+    gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
+  }
+
+  gmsh::model::mesh::generate(3);
+  gmsh::model::mesh::setOrder(2);
+
+  if (!write_msh.empty()) {
+    session.set_number("Mesh.MshFileVersion", 4.1);
+    session.set_number("Mesh.Binary", 0);
+    session.set_number("Mesh.SaveAll", 0);
+    std::error_code ec;
+    std::filesystem::remove(write_msh, ec);
+    gmsh::write(write_msh);
+    if (!std::filesystem::is_regular_file(write_msh, ec)) {
+      throw std::runtime_error("could not write '" + write_msh + "'");
+    }
+  }
+  return extract_current_model();
+}
+
+std::vector<int> classify_surfaces(std::span<const char* const> names, const std::string& geometry,
+                                   const std::function<std::size_t(int)>& face_of) {
+  std::vector<int> tags(names.size(), -1);
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [dim, tag] : surfaces) {
+    const std::size_t face = face_of(tag);
+    if (face >= tags.size() || tags[face] != -1) {
+      throw std::runtime_error("unexpected surface " + std::to_string(tag) + " in the " + geometry +
+                               " geometry");
     }
     tags[face] = tag;
   }
   for (std::size_t f = 0; f < tags.size(); ++f) {
     if (tags[f] == -1) {
-      throw std::runtime_error(std::string("face '") + kCylinderFaces[f] + "' not found");
+      throw std::runtime_error(std::string("face '") + names[f] + "' not found");
     }
   }
   return tags;
 }
 
-}  // namespace
+void add_physical_groups(int volume, std::span<const int> surfaces,
+                         std::span<const char* const> names) {
+  for (std::size_t f = 0; f < surfaces.size(); ++f) {
+    const int group = static_cast<int>(f) + 1;
+    gmsh::model::addPhysicalGroup(2, {surfaces[f]}, group);
+    gmsh::model::setPhysicalName(2, group, names[f]);
+  }
+  gmsh::model::addPhysicalGroup(3, {volume}, 1);
+  gmsh::model::setPhysicalName(3, 1, "domain");
+}
+
+}  // namespace detail
 
 Mesh generate_quarter_cylinder(const QuarterCylinderSpec& spec) {
-  const std::string context = "generate_quarter_cylinder";
-  try {
+  return detail::with_context("generate_quarter_cylinder", [&] {
     validate(spec);
-    GmshSession session;
-    const bool graded = !spec.grading_faces.empty() && spec.grading_ratio > 1.0;
-    const double fine = graded ? spec.lc / spec.grading_ratio : spec.lc;
-    session.set_number("General.NumThreads", 1);
-    session.set_number("Mesh.MaxNumThreads1D", 1);
-    session.set_number("Mesh.MaxNumThreads2D", 1);
-    session.set_number("Mesh.MaxNumThreads3D", 1);
-    session.set_number("Mesh.Algorithm", 6);    // Frontal-Delaunay on surfaces
-    session.set_number("Mesh.Algorithm3D", 1);  // Delaunay in the volume
-    session.set_number("Mesh.RandomSeed", 1);
-    session.set_number("Mesh.Optimize", 1);
-    session.set_number("Mesh.OptimizeNetgen", 0);
-    session.set_number("Mesh.ElementOrder", 1);
-    session.set_number("Mesh.SecondOrderLinear", 0);
-    session.set_number("Mesh.HighOrderOptimize", 0);
-    session.set_number("Mesh.MeshSizeFactor", 1);
-    session.set_number("Mesh.MeshSizeFromCurvature", 0);
-    session.set_number("Mesh.MeshSizeFromPoints", 0);
-    // gmsh's default (sizes interpolated from the surface mesh into the volume) for uniform
-    // meshes; off when graded, where it would spread the fine face size through the volume.
-    session.set_number("Mesh.MeshSizeExtendFromBoundary", graded ? 0 : 1);
-    session.set_number("Mesh.MeshSizeMin", fine);
-    session.set_number("Mesh.MeshSizeMax", spec.lc);
-
-    const int volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, spec.height, spec.radius, -1,
-                                                     std::numbers::pi / 2);
-    gmsh::model::occ::synchronize();
-    const std::array<int, 5> faces = classify_cylinder_faces(spec);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      const int group = static_cast<int>(f) + 1;  // stored order = kCylinderFaces order
-      gmsh::model::addPhysicalGroup(2, {faces[f]}, group);
-      gmsh::model::setPhysicalName(2, group, kCylinderFaces[f]);
-    }
-    gmsh::model::addPhysicalGroup(3, {volume}, 1);
-    gmsh::model::setPhysicalName(3, 1, "domain");
-
-    if (graded) {
-      std::vector<double> graded_faces;
+    const detail::GmshSizing sizing{spec.lc, spec.grading_ratio, spec.grading_distance,
+                                    std::max(spec.radius * std::numbers::pi / 2, spec.height)};
+    return detail::mesh_with_gmsh(sizing, spec.write_msh, [&] {
+      const int volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, spec.height, spec.radius, -1,
+                                                       std::numbers::pi / 2);
+      gmsh::model::occ::synchronize();
+      const std::vector<int> faces = classify_cylinder_faces(spec);
+      detail::add_physical_groups(volume, faces, kCylinderFaces);
+      std::vector<int> graded;
       for (const std::string& name : spec.grading_faces) {
-        const auto f = static_cast<std::size_t>(
-            std::find(kCylinderFaces.begin(), kCylinderFaces.end(), name) - kCylinderFaces.begin());
-        graded_faces.push_back(faces[f]);
+        const auto f = std::find(kCylinderFaces.begin(), kCylinderFaces.end(), name);
+        graded.push_back(faces[static_cast<std::size_t>(f - kCylinderFaces.begin())]);
       }
-      // Sample each face densely enough (half the fine size along its longest side) for the
-      // distance to be accurate where the size matters.
-      const double longest = std::max({spec.radius * std::numbers::pi / 2, spec.height});
-      const double samples = std::ceil(2.0 * longest / fine) + 1.0;
-      const int distance = gmsh::model::mesh::field::add("Distance");
-      gmsh::model::mesh::field::setNumbers(distance, "SurfacesList", graded_faces);
-      gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
-      const int threshold = gmsh::model::mesh::field::add("Threshold");
-      gmsh::model::mesh::field::setNumber(threshold, "InField", distance);
-      gmsh::model::mesh::field::setNumber(threshold, "SizeMin", fine);
-      gmsh::model::mesh::field::setNumber(threshold, "SizeMax", spec.lc);
-      gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0.0);
-      gmsh::model::mesh::field::setNumber(threshold, "DistMax", spec.grading_distance);
-      gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
-    }
-
-    gmsh::model::mesh::generate(3);
-    gmsh::model::mesh::setOrder(2);
-
-    if (!spec.write_msh.empty()) {
-      session.set_number("Mesh.MshFileVersion", 4.1);
-      session.set_number("Mesh.Binary", 0);
-      session.set_number("Mesh.SaveAll", 0);
-      std::error_code ec;
-      std::filesystem::remove(spec.write_msh, ec);
-      gmsh::write(spec.write_msh);
-      if (!std::filesystem::is_regular_file(spec.write_msh, ec)) {
-        throw std::runtime_error("could not write '" + spec.write_msh + "'");
-      }
-    }
-    return extract_current_model();
-  } catch (const std::string& message) {
-    throw std::runtime_error(context + ": gmsh: " + message);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(context + ": " + e.what());
-  }
+      return graded;
+    });
+  });
 }
 
 Mesh read_gmsh(const std::string& path) {
-  const std::string context = "read_gmsh: '" + path + "'";
-  try {
+  return detail::with_context("read_gmsh: '" + path + "'", [&] {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw std::runtime_error("file does not exist");
     if (!std::filesystem::is_regular_file(path, ec)) {
@@ -541,11 +549,7 @@ Mesh read_gmsh(const std::string& path) {
     GmshSession session;
     gmsh::merge(path);
     return extract_current_model();
-  } catch (const std::string& message) {
-    throw std::runtime_error(context + ": gmsh: " + message);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(context + ": " + e.what());
-  }
+  });
 }
 
 }  // namespace biphasic

@@ -1,4 +1,5 @@
-// Ways to obtain a Mesh: generated quarter cylinder, or a user's gmsh .msh file.
+// Ways to obtain a Mesh: generated quarter cylinder, column and sphere octant, or a user's gmsh
+// .msh file.
 #pragma once
 
 #include <string>
@@ -30,6 +31,62 @@ struct QuarterCylinderSpec {
 /// Throws std::runtime_error on failure or on an invalid spec (non-positive sizes, unknown
 /// grading face, grading_ratio < 1).
 Mesh generate_quarter_cylinder(const QuarterCylinderSpec& spec);
+
+/// Box [0, width] × [0, depth] × [0, height] of nx × ny × nz hexahedral cells, each split
+/// into six tetrahedra along its diagonal from (x_i, y_j, z_k) to (x_{i+1}, y_{j+1}, z_{k+1})
+/// (Kuhn split, conforming). x and y are divided uniformly; the nz layers follow
+/// column_layer_z. Boundaries, in this order: "bottom" (z = 0), "top" (z = height),
+/// "x0" (x = 0), "x1" (x = width), "y0" (y = 0), "y1" (y = depth).
+struct ColumnSpec {
+  double width = 1.0;   ///< extent in x [mm]
+  double depth = 1.0;   ///< extent in y [mm]
+  double height = 1.0;  ///< extent in z [mm]
+  int nx = 1;           ///< cells in x, ≥ 1
+  int ny = 1;           ///< cells in y, ≥ 1
+  int nz = 10;          ///< layers in z, ≥ 1
+  /// Faces the layers are graded toward: "bottom", "top" or both. Empty = uniform.
+  std::vector<std::string> grading_faces;
+  /// Thickness of the thickest layer over that of the thinnest (≥ 1; 1 = uniform). Needs
+  /// nz ≥ 2 when grading toward one face, nz ≥ 3 toward both.
+  double grading_ratio = 1.0;
+};
+
+/// z [mm] of the nz + 1 layer interfaces of the column: layer k spans [z_k, z_{k+1}],
+/// z_0 = 0, z_nz = height exactly, and z_k = height · S_k / S_nz with S_k = Σ_{j<k} h_j and
+/// h_j = grading_ratio^(e_j / m), where e_j is the distance in layers of layer j from the graded
+/// face (j toward "bottom", nz − 1 − j toward "top", min(j, nz − 1 − j) toward both) and m the
+/// largest e_j (nz − 1, or ⌊(nz − 1)/2⌋ for both). Uniform: h_j = 1, z_k = height · k / nz.
+/// Thicknesses thus form a geometric progression of factor grading_ratio^(1/m) away from the
+/// graded face(s), thinnest layer at a graded face, thickest/thinnest = grading_ratio. These are
+/// exactly the vertex z-coordinates of generate_column. Throws like generate_column.
+std::vector<double> column_layer_z(const ColumnSpec& spec);
+
+/// Generates the column as a P2 mesh (straight edges, through make_p2_from_linear): vertices
+/// numbered x fastest, then y, then z; tets re-oriented to positive volume, boundary faces
+/// pointing outward. 6·nx·ny·nz tets, (nx+1)(ny+1)(nz+1) vertices. Throws std::runtime_error
+/// naming the field and its value on an invalid spec (non-positive or non-finite size, count
+/// < 1, grading_ratio < 1, unknown grading face, too few layers for the grading).
+Mesh generate_column(const ColumnSpec& spec);
+
+/// Octant of the ball of radius `radius` centred at the origin (x, y, z ≥ 0), generated with
+/// the gmsh C++ API (OpenCASCADE). Boundaries, in this order: "surface" (r = radius),
+/// "symmetry_x" (x = 0), "symmetry_y" (y = 0), "symmetry_z" (z = 0).
+struct SphereOctantSpec {
+  double radius = 1.0;  ///< [mm]
+  double lc = 0.2;      ///< characteristic length [mm]
+  /// Optional grading toward "surface": element size grows linearly from lc / grading_ratio on
+  /// the surface to lc at distance grading_distance from it. 1 = uniform.
+  double grading_ratio = 1.0;      ///< ≥ 1
+  double grading_distance = 0.25;  ///< [mm]
+  std::string write_msh;           ///< if not empty, write the generated mesh here (.msh 4.1)
+};
+
+/// Generates the sphere octant with gmsh and returns it as a P2 mesh: edge nodes of "surface"
+/// lie on the sphere (gmsh places them on the CAD surface), boundary faces point outward.
+/// Deterministic for a given spec; leaves gmsh initialized or not, with its current model and
+/// options, as it found it. Throws std::runtime_error on failure or on an invalid spec
+/// (radius, lc or grading_distance not positive and finite, grading_ratio < 1).
+Mesh generate_sphere_octant(const SphereOctantSpec& spec);
 
 /// Reads a gmsh .msh file (format 2.2 or 4.1) with 4-node or 10-node tetrahedra. Boundaries
 /// are the physical surfaces (triangles) by name; a physical surface without a name is named
