@@ -47,14 +47,6 @@ void write_json_atomically(const fs::path& path, const nlohmann::json& j) {
   fs::rename(tmp, path);
 }
 
-Mesh build_mesh(const Config& config, const fs::path& output_dir) {
-  if (config.mesh.source == MeshSource::File) return read_gmsh(config.mesh.file);
-  QuarterCylinderSpec spec = config.mesh.cylinder;
-  if (!spec.write_msh.empty() && fs::path(spec.write_msh).is_relative())
-    spec.write_msh = (output_dir / spec.write_msh).string();
-  return generate_quarter_cylinder(spec);
-}
-
 nlohmann::json measures_json(const LineMeasures& m) {
   nlohmann::json j{{"p_mid", m.p_mid}, {"p_max", m.p_max}, {"p_min", m.p_min}};
   j["overshoot"] = m.defined ? nlohmann::json(m.overshoot) : nlohmann::json(nullptr);
@@ -62,7 +54,53 @@ nlohmann::json measures_json(const LineMeasures& m) {
   return j;
 }
 
+/// reactions.csv: `t,boundary,Fx,Fy,Fz` (s, N), one row per boundary and output time, flushed
+/// after every output.
+class ReactionCsv {
+ public:
+  explicit ReactionCsv(const fs::path& path) : out_(path) {
+    if (!out_) throw std::runtime_error("cannot write " + path.string());
+    out_.precision(17);
+    out_ << "t,boundary,Fx,Fy,Fz\n";
+    out_.flush();
+  }
+  void write(double t, const std::vector<std::string>& names,
+             const std::vector<std::array<double, 3>>& forces) {
+    for (std::size_t b = 0; b < names.size(); ++b)
+      out_ << t << ',' << names[b] << ',' << forces[b][0] << ',' << forces[b][1] << ','
+           << forces[b][2] << '\n';
+    out_.flush();
+  }
+
+ private:
+  std::ofstream out_;
+};
+
 }  // namespace
+
+Mesh build_mesh(const Config& config, const std::string& output_dir) {
+  auto in_output_dir = [&](std::string path) {
+    if (!path.empty() && fs::path(path).is_relative())
+      path = (fs::path(output_dir) / path).string();
+    return path;
+  };
+  switch (config.mesh.source) {
+    case MeshSource::File:
+      return read_gmsh(config.mesh.file);
+    case MeshSource::Column:
+      return generate_column(config.mesh.column);
+    case MeshSource::SphereOctant: {
+      SphereOctantSpec spec = config.mesh.sphere_octant;
+      spec.write_msh = in_output_dir(config.mesh.cylinder.write_msh);
+      return generate_sphere_octant(spec);
+    }
+    case MeshSource::QuarterCylinder:
+      break;
+  }
+  QuarterCylinderSpec spec = config.mesh.cylinder;
+  spec.write_msh = in_output_dir(spec.write_msh);
+  return generate_quarter_cylinder(spec);
+}
 
 std::string dependency_versions() {
   std::ostringstream s;
@@ -97,7 +135,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
       (config.title.empty() ? config.case_file : config.title));
   auto t0 = Clock::now();
-  const Mesh mesh = build_mesh(config, out_dir);
+  const Mesh mesh = build_mesh(config, out_dir.string());
   const double mesh_seconds = seconds_since(t0);
   check_boundaries(config, mesh.boundary_names());
 
@@ -132,6 +170,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   std::unique_ptr<FieldWriter> fields;
   if (config.output.fields)
     fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  std::unique_ptr<ReactionCsv> reaction_csv;
+  if (!config.output.reactions.empty())
+    reaction_csv = std::make_unique<ReactionCsv>(out_dir / "reactions.csv");
   summary["line"] = {{"start", a}, {"end", b}, {"nodes", probe.size()}};
   summary["steps"] = nlohmann::json::array();
   summary["outputs"] = nlohmann::json::array();
@@ -141,13 +182,21 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     u.assign(y.begin(), y.begin() + problem.num_u());
     p.assign(y.begin() + problem.num_u(), y.end());
   };
-  auto write_output = [&](double t, const std::vector<double>& y) {
+  auto write_output = [&](double t, const std::vector<double>& y, const std::vector<double>& ydot) {
     split(y);
     if (line_csv) line_csv->write(t, probe, u, p);
     if (fields) fields->write(t, u, p);
     const LineMeasures m = line_measures(probe.s(), probe.pressure(p));
     nlohmann::json o = measures_json(m);
     o["t"] = t;
+    if (reaction_csv) {
+      const auto& names = config.output.reactions;
+      const auto forces = problem.reactions(names, t, y.data(), ydot.data());
+      reaction_csv->write(t, names, forces);
+      nlohmann::json r = nlohmann::json::object();
+      for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
+      o["reactions"] = r;
+    }
     summary["outputs"].push_back(o);
     return m;
   };
@@ -193,12 +242,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   std::vector<double> y(problem.size(), 0.0);
   const double t_start = 0.0;
   problem.apply_dirichlet(t_start, y.data(), nullptr);
-  write_output(t_start, y);
+  write_output(t_start, y, std::vector<double>(y.size(), 0.0));
   const int every = std::max(1, config.output.every);
   const int planned =
       std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
 
-  auto observer = [&](const StepInfo& info, const std::vector<double>& ys) {
+  auto observer = [&](const StepInfo& info, const std::vector<double>& ys,
+                      const std::vector<double>& ydots) {
     nlohmann::json rec{{"step", info.step},
                        {"t", info.t},
                        {"dt", info.dt},
@@ -211,7 +261,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const bool output_now = info.step % every == 0 || info.step == planned;
     std::string mid;
     if (output_now) {
-      const LineMeasures m = write_output(info.t, ys);
+      const LineMeasures m = write_output(info.t, ys, ydots);
       rec["p_mid"] = m.p_mid;
       char buf[96];
       std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f", m.p_mid,

@@ -170,11 +170,15 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     }
     switch (bc.type) {
       case BcType::Displacement:
-        for (Index n : nodes) constrain(i, pattern_.u_dof(n, bc.component), bc.value, curve);
-        break;
       case BcType::Symmetry: {
-        const int axis = plane_axis(mesh, *b, bc_label(i, bc));
-        for (Index n : nodes) constrain(i, pattern_.u_dof(n, axis), 0.0, nullptr);
+        const bool symmetry = bc.type == BcType::Symmetry;
+        const int axis = symmetry ? plane_axis(mesh, *b, bc_label(i, bc)) : bc.component;
+        std::vector<Index>& held = held_rows_[bc.boundary];
+        for (Index n : nodes) {
+          const Index dof = pattern_.u_dof(n, axis);
+          constrain(i, dof, symmetry ? 0.0 : bc.value, symmetry ? nullptr : curve);
+          held.push_back(dof);
+        }
         break;
       }
       case BcType::Pressure:
@@ -212,6 +216,10 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
         break;
       }
     }
+  }
+  for (auto& [name, rows] : held_rows_) {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   }
 }
 
@@ -279,10 +287,8 @@ void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, cons
   }
 }
 
-void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
-  const auto t0 = Clock::now();
-  const Index n = size();
-  std::fill(F, F + n, 0.0);
+void BiphasicProblem::assemble(double t, const double* y, const double* ydot, double* F) {
+  std::fill(F, F + size(), 0.0);
   for_each_element(false, y, ydot, [&](Index e, const ElementOutput& out) {
     const Tet10& tet = mesh_.tets[e];
     for (int s = 0; s < kElementDofs; ++s) F[pattern_.global_dof(tet, s)] += out.residual(s);
@@ -291,6 +297,29 @@ void BiphasicProblem::residual(double t, const double* y, const double* ydot, do
     const double scale = l.value * curve_value(l.curve, t);
     for (const auto& [row, amount] : l.entries) F[row] += scale * amount;
   }
+}
+
+std::vector<std::array<double, 3>> BiphasicProblem::reactions(
+    const std::vector<std::string>& boundaries, double t, const double* y, const double* ydot) {
+  std::vector<const std::vector<Index>*> rows;
+  for (const std::string& name : boundaries) {
+    const auto it = held_rows_.find(name);
+    if (it == held_rows_.end())
+      throw std::invalid_argument("reaction on '" + name +
+                                  "': the boundary has no displacement or symmetry condition");
+    rows.push_back(&it->second);
+  }
+  std::vector<double> F(size());
+  assemble(t, y, ydot, F.data());
+  std::vector<std::array<double, 3>> out(boundaries.size(), {0.0, 0.0, 0.0});
+  for (std::size_t b = 0; b < rows.size(); ++b)
+    for (Index dof : *rows[b]) out[b][dof % 3] += F[dof];  // u_dof(n, c) = 3n + c
+  return out;
+}
+
+void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
+  const auto t0 = Clock::now();
+  assemble(t, y, ydot, F);
   for (const Dirichlet& d : dirichlet_) {
     const double s = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
     F[d.dof] = s * (y[d.dof] - d.value * curve_value(d.curve, t));

@@ -227,7 +227,8 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     std::tie(info.residual_u, info.residual_p) = problem.field_norms(m.last_residual.data());
     ++stats_.steps;
     stats_.newton_iterations += iterations;
-    if (observer) observer(info, y);
+    m.rate(yv);  // ẏ of the converged state
+    if (observer) observer(info, y, m.ydot);
   }
 }
 

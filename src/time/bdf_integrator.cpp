@@ -280,7 +280,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       at_last_output = now;
       problem.residual(to, y_out.data(), ydot_out.data(), F.data());
       std::tie(info.residual_u, info.residual_p) = problem.field_norms(F.data());
-      if (observer) observer(info, y_out);
+      if (observer) observer(info, y_out, ydot_out);
       ++next_output;
     }
     if (flag == IDA_TSTOP_RETURN && stop + 1 < stops.size()) {

@@ -48,6 +48,10 @@ TEST(CaseDocs, ReferenceCoversTheSchema) {
         "`linear_solver.ordering`", "`output.line_end`", "`output.line`"}) {
     EXPECT_NE(generated.find(key), std::string::npos) << key;
   }
+  for (const char* key : {"`mesh.column.nz`", "`mesh.column.grading_faces`",
+                          "`mesh.sphere_octant.lc`", "`output.reactions`"}) {
+    EXPECT_NE(generated.find(key), std::string::npos) << key;
+  }
   // Defaults come from Config, ranges and units from the schema.
   EXPECT_NE(generated.find("| `time.dt` | number | `6.4` | > 0 | s |"), std::string::npos);
   EXPECT_NE(

@@ -345,7 +345,8 @@ ordering = "nd"
   EXPECT_TRUE(has_problem(
       problems, {"cases/x.toml: stabilisation.type = \"glss\": must be one of none, gls"}));
   EXPECT_TRUE(has_problem(problems, {"stabilisation.length = \"diameter\"", "circumradius"}));
-  EXPECT_TRUE(has_problem(problems, {"mesh.source = \"generated\"", "quarter_cylinder, file"}));
+  EXPECT_TRUE(has_problem(
+      problems, {"mesh.source = \"generated\"", "quarter_cylinder, column, sphere_octant, file"}));
   EXPECT_TRUE(has_problem(problems, {"mesh.grading_faces = [\"top\", \"topp\"]", "\"topp\"",
                                      "bottom, top, lateral, symmetry_x, symmetry_y"}));
   EXPECT_TRUE(has_problem(problems, {"linear_solver.ordering = \"nd\"", "amd, colamd, metis"}));
@@ -585,7 +586,102 @@ line_end = [0, 0, 4]
     EXPECT_TRUE(j.contains(section)) << section;
   }
   EXPECT_EQ(j["time"]["newton"].size(), 7u);
-  EXPECT_EQ(j["mesh"].size(), 9u);
+  EXPECT_EQ(j["mesh"].size(), 11u);  // nine keys, [mesh.column], [mesh.sphere_octant]
+  EXPECT_EQ(j["mesh"]["column"].size(), 8u);
+  EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
+  EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
+}
+
+TEST(CaseFile, GeneratedColumnAndSphereOctant) {
+  const Config column = parse_case(kMinimalCase + R"(
+[mesh]
+source = "column"
+[mesh.column]
+width = 0.5
+depth = 0.25
+height = 2
+nx = 2
+ny = 3
+nz = 12
+grading_faces = ["top"]
+grading_ratio = 4
+)",
+                                   "cases/x.toml");
+  EXPECT_EQ(column.mesh.source, MeshSource::Column);
+  EXPECT_DOUBLE_EQ(column.mesh.column.width, 0.5);
+  EXPECT_DOUBLE_EQ(column.mesh.column.depth, 0.25);
+  EXPECT_DOUBLE_EQ(column.mesh.column.height, 2.0);
+  EXPECT_EQ(column.mesh.column.nx, 2);
+  EXPECT_EQ(column.mesh.column.ny, 3);
+  EXPECT_EQ(column.mesh.column.nz, 12);
+  EXPECT_EQ(column.mesh.column.grading_faces, std::vector<std::string>{"top"});
+  EXPECT_DOUBLE_EQ(column.mesh.column.grading_ratio, 4.0);
+
+  const Config sphere = parse_case(kMinimalCase + R"(
+[mesh]
+source = "sphere_octant"
+write_msh = "octant.msh"
+[mesh.sphere_octant]
+radius = 3
+lc = 0.4
+grading_ratio = 2
+grading_distance = 0.5
+)",
+                                   "cases/x.toml");
+  EXPECT_EQ(sphere.mesh.source, MeshSource::SphereOctant);
+  EXPECT_DOUBLE_EQ(sphere.mesh.sphere_octant.radius, 3.0);
+  EXPECT_DOUBLE_EQ(sphere.mesh.sphere_octant.lc, 0.4);
+  EXPECT_DOUBLE_EQ(sphere.mesh.sphere_octant.grading_ratio, 2.0);
+  EXPECT_DOUBLE_EQ(sphere.mesh.sphere_octant.grading_distance, 0.5);
+  EXPECT_EQ(sphere.mesh.cylinder.write_msh, "octant.msh");
+}
+
+TEST(CaseFile, KeysOfAnotherMeshSourceAreErrors) {
+  const auto problems = problems_of(kMinimalCase + R"(
+[mesh]
+source = "column"
+height = 2.0
+write_msh = "column.msh"
+[mesh.sphere_octant]
+radius = 1
+[mesh.column]
+nz = 0
+)");
+  EXPECT_TRUE(has_problem(problems, {"mesh.height = 2.0: applies only to mesh.source = "
+                                     "\"quarter_cylinder\", not to mesh.source = \"column\""}));
+  EXPECT_TRUE(has_problem(problems, {"mesh.write_msh", "gmsh"}));
+  EXPECT_TRUE(has_problem(problems, {"mesh.sphere_octant = { radius = 1 }",
+                                     "applies only to mesh.source = \"sphere_octant\""}));
+  EXPECT_TRUE(has_problem(problems, {"mesh.column.nz = 0: must be >= 1"}));
+  EXPECT_EQ(problems.size(), 4u);
+
+  // Column keys with the quarter cylinder, and too few layers for a grading.
+  const auto cylinder = problems_of(kMinimalCase + "[mesh.column]\nwidth = 2.0\n");
+  ASSERT_EQ(cylinder.size(), 1u);
+  EXPECT_TRUE(has_problem(
+      cylinder, {"mesh.column = { width = 2.0 }", "not to mesh.source = \"quarter_cylinder\""}));
+  const auto layers = problems_of(kMinimalCase + R"(
+[mesh]
+source = "column"
+[mesh.column]
+nz = 2
+grading_faces = ["top", "bottom"]
+grading_ratio = 3
+)");
+  ASSERT_EQ(layers.size(), 1u);
+  EXPECT_TRUE(has_problem(layers, {"mesh.column.nz = 2: must be >= 3 to grade the layers toward "
+                                   "[\"top\", \"bottom\"]"}));
+}
+
+TEST(CaseFile, ReactionBoundariesNeedADisplacementOrSymmetryCondition) {
+  const std::string side = "[[boundary]]\nname = \"side\"\ntype = \"pressure\"\nvalue = 0.0\n";
+  const Config ok = parse_case(kMinimalCase + side + "[output]\nreactions = [\"top\"]\n", "x");
+  EXPECT_EQ(ok.output.reactions, std::vector<std::string>{"top"});
+  const auto problems =
+      problems_of(kMinimalCase + side + "[output]\nreactions = [\"top\", \"side\"]\n");
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_TRUE(has_problem(problems, {"output.reactions = [\"top\", \"side\"]",
+                                     "\"side\" has no displacement or symmetry condition"}));
 }
 
 TEST(CaseFile, CheckBoundariesAgainstTheMesh) {

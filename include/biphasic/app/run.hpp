@@ -5,6 +5,7 @@
 #include <string>
 
 #include "biphasic/io/config.hpp"
+#include "biphasic/mesh/mesh.hpp"
 
 namespace biphasic {
 
@@ -13,10 +14,16 @@ struct RunOptions {
   bool quiet = false;  ///< no per-step lines on the terminal
 };
 
+/// The mesh the configuration describes (generated or read); a relative mesh.write_msh is
+/// written into `output_dir`. Throws std::runtime_error on failure.
+Mesh build_mesh(const Config& config, const std::string& output_dir);
+
 /// Runs the case, writing into options.output_dir as the run goes:
 ///   line.csv      pressure and displacement on the probe line at each output time
 ///   fields.h5 / fields.xdmf   u on P2 nodes and p (ParaView, Tetrahedron_10)
-///   summary.json  resolved configuration, mesh size, per-step records, counters, timings
+///   reactions.csv t, boundary, Fx, Fy, Fz of each boundary in output.reactions [s, N]
+///   summary.json  resolved configuration, mesh size, per-step records, outputs (line
+///                 measures, reactions), counters, timings
 /// Returns the summary. On a failed step the summary records the failure (status "failed")
 /// and the StepFailure propagates.
 nlohmann::json run_case(const Config& config, const RunOptions& options);

@@ -22,11 +22,13 @@ struct LoadCurve {
   std::vector<double> kinks() const;
 };
 
-enum class MeshSource { QuarterCylinder, File };
+enum class MeshSource { QuarterCylinder, Column, SphereOctant, File };
 
 struct MeshConfig {
   MeshSource source = MeshSource::QuarterCylinder;
-  QuarterCylinderSpec cylinder;
+  QuarterCylinderSpec cylinder;  ///< also holds write_msh for every gmsh-generated source
+  ColumnSpec column;
+  SphereOctantSpec sphere_octant;
   std::string file;  ///< .msh path (resolved relative to the case file's folder)
 };
 
@@ -121,6 +123,9 @@ struct OutputConfig {
   int every = 1;       ///< write outputs every n steps (and always the last)
   bool fields = true;  ///< HDF5/XDMF fields
   bool line = true;    ///< line CSV
+  /// Boundaries whose reaction forces are written (reactions.csv and the summary): the force
+  /// their displacement and symmetry conditions exert on the body [N].
+  std::vector<std::string> reactions;
 };
 
 /// Case-file names of enumerators ("displacement", "metis", …).

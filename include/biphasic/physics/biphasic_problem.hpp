@@ -3,6 +3,7 @@
 // drive this one object.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -54,6 +55,15 @@ class BiphasicProblem {
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;
 
+  /// Reaction forces [N] at (t, y, ẏ): for each named boundary, the force its displacement and
+  /// symmetry conditions exert on the body, i.e. the sum over the boundary's nodes of the
+  /// momentum residual (internal force minus applied loads) on the displacement rows that those
+  /// conditions fix, component by component. A row fixed by conditions on two boundaries (an
+  /// edge node) counts for both. Throws std::invalid_argument for a name with no displacement
+  /// or symmetry condition.
+  std::vector<std::array<double, 3>> reactions(const std::vector<std::string>& boundaries, double t,
+                                               const double* y, const double* ydot);
+
   /// Sets the constrained entries of y to ḡ(t) and of ẏ to dḡ/dt (ẏ may be null).
   void apply_dirichlet(double t, double* y, double* ydot) const;
   /// Load-curve kinks of every boundary condition (sorted, unique) [s].
@@ -64,6 +74,9 @@ class BiphasicProblem {
   double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
 
   AssemblyStats& stats() { return stats_; }
+  /// Stiffness scale H_A · (mean element size) [N/mm]: turns a displacement into a force, e.g.
+  /// to compare a momentum residual with a displacement tolerance.
+  double stiffness_scale() const { return row_scale_u_; }
 
  private:
   struct Dirichlet {
@@ -76,6 +89,8 @@ class BiphasicProblem {
     double value;
     const LoadCurve* curve;
   };
+  /// Element residuals and applied loads into F (size n), Dirichlet rows not replaced.
+  void assemble(double t, const double* y, const double* ydot, double* F);
   void gather(Index e, const double* y, const double* ydot, ElementVector& ye,
               ElementVector& ydote) const;
   /// Runs work(e, out) over all elements, colour by colour, in parallel within a colour
@@ -94,6 +109,8 @@ class BiphasicProblem {
   std::vector<std::vector<Index>> colours_;  ///< elements sharing no node, per colour
   std::vector<Dirichlet> dirichlet_;
   std::vector<char> constrained_;
+  /// Displacement rows fixed by each boundary's own displacement and symmetry conditions.
+  std::map<std::string, std::vector<Index>> held_rows_;
   std::vector<NodalLoad> loads_;
   double row_scale_u_ = 1.0;  ///< Dirichlet row scale on displacement rows [N/mm]
   double row_scale_p_ = 1.0;  ///< Dirichlet row scale on pressure rows [mm³/(s MPa)]

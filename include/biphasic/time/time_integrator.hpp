@@ -29,15 +29,18 @@ struct StepInfo {
 struct IntegratorStats {
   long steps = 0;
   long newton_iterations = 0;
-  long nonlinear_failures = 0;  ///< failed Newton solves (retried / step reduced)
+  long nonlinear_failures = 0;     ///< failed Newton solves (retried / step reduced)
   long error_test_failures = 0;    ///< BDF only
   long restarts = 0;               ///< BDF: re-initialisations at load-curve kinks
   std::vector<long> order_counts;  ///< BDF: steps taken at order 1..5 (index q − 1)
   std::vector<double> step_sizes;  ///< BDF: every accepted internal step [s]
 };
 
-/// Called after every accepted step with the solution y at StepInfo::t.
-using StepObserver = std::function<void(const StepInfo&, const std::vector<double>& y)>;
+/// Called after every accepted step (backward Euler) or output time (BDF) with the solution y
+/// and its rate ẏ at StepInfo::t (backward Euler: the step's difference quotient; BDF: IDA's
+/// interpolant).
+using StepObserver = std::function<void(const StepInfo&, const std::vector<double>& y,
+                                        const std::vector<double>& ydot)>;
 
 /// A step that could not be completed: names the step, the time and the reason.
 struct StepFailure : std::runtime_error {

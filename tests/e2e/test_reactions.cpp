@@ -1,0 +1,123 @@
+// Reaction forces (output.reactions): a column stretched homogeneously in uniaxial strain under
+// a uniform pore pressure, run end to end; every support force against the Neo-Hookean closed
+// form, nominal stress × reference area, equal and opposite on opposite faces.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "biphasic/analytic/confined_compression.hpp"
+#include "biphasic/app/run.hpp"
+#include "biphasic/io/case_file.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
+
+namespace biphasic {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kMu = 0.5, kLambda = 0.3, kPressure = 0.05;  // MPa
+constexpr double kWidth = 1.0, kDepth = 1.5, kHeight = 2.0;   // mm
+constexpr double kStretch = 1.2;                              // λ_z at t = 1 s
+
+// Every vertex of a one-cell-wide column lies on its boundary, so p = p0 on all faces fixes a
+// uniform pressure; rollers on the sides and the top pulled up to λ_z give F = diag(1, 1, λ_z).
+std::string column_case() {
+  std::ostringstream s;
+  s << "format_version = 1\n"
+    << "[mesh]\nsource = \"column\"\n"
+    << "[mesh.column]\nwidth = " << kWidth << "\ndepth = " << kDepth << "\nheight = " << kHeight
+    << "\nnz = 2\n"
+    << "[material]\nmu = " << kMu << "\nlambda = " << kLambda << "\npermeability = 1e-3\n"
+    << "[curves]\nramp = [[0.0, 0.0], [1.0, 1.0]]\n"
+    << "[[boundary]]\nname = \"top\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = "
+    << (kStretch - 1.0) * kHeight << "\ncurve = \"ramp\"\n"
+    << "[[boundary]]\nname = \"bottom\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = 0\n";
+  for (const char* face : {"x0", "x1", "y0", "y1"})
+    s << "[[boundary]]\nname = \"" << face << "\"\ntype = \"symmetry\"\n";
+  for (const char* face : {"top", "bottom", "x0", "x1", "y0", "y1"})
+    s << "[[boundary]]\nname = \"" << face << "\"\ntype = \"pressure\"\nvalue = " << kPressure
+      << "\n";
+  s << "[time]\nt_end = 1.0\ndt = 1.0\n"
+    << "[linear_solver]\ntype = \"klu\"\nordering = \"amd\"\n"
+    << "[output]\nline_start = [0, 0, 0]\nline_end = [0, 0, " << kHeight << "]\nfields = false\n"
+    << "reactions = [\"top\", \"bottom\", \"x0\", \"x1\", \"y0\", \"y1\"]\n";
+  return s.str();
+}
+
+/// Nominal total stress of F = diag(1, 1, s) under pore pressure p: P = P_eff − p J F⁻ᵀ,
+/// P_eff = μ (F − F⁻ᵀ) + λ ln J F⁻ᵀ, J = s.
+double axial_stress(double s, double p) {
+  return analytic::neo_hookean_uniaxial_stress(kMu, kLambda, s) - p;
+}
+double lateral_stress(double s, double p) { return kLambda * std::log(s) - p * s; }
+
+/// Expected reaction on each face: P N times the reference area (N the outward normal).
+std::map<std::string, std::array<double, 3>> expected_reactions(double s, double p) {
+  const double z = axial_stress(s, p) * kWidth * kDepth;
+  const double x = lateral_stress(s, p) * kDepth * kHeight;
+  const double y = lateral_stress(s, p) * kWidth * kHeight;
+  return {{"top", {0, 0, z}}, {"bottom", {0, 0, -z}}, {"x0", {-x, 0, 0}},
+          {"x1", {x, 0, 0}},  {"y0", {0, -y, 0}},     {"y1", {0, y, 0}}};
+}
+
+TEST(Reactions, HomogeneousUniaxialStrainMatchesTheClosedForm) {
+  const fs::path out =
+      fs::temp_directory_path() / ("biphasic_reactions_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  RunOptions options;
+  options.output_dir = out.string();
+  options.quiet = true;
+  const nlohmann::json summary = run_case(parse_case(column_case(), "column.toml"), options);
+  ASSERT_EQ(summary["status"], "completed");
+
+  // reactions.csv: a row per boundary at t = 0 (pressure only, F = I) and t = 1 s (stretched).
+  std::ifstream csv(out / "reactions.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "t,boundary,Fx,Fy,Fz");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::stringstream cells(line);
+    std::string t, name, f[3];
+    std::getline(cells, t, ',');
+    std::getline(cells, name, ',');
+    for (auto& c : f) std::getline(cells, c, ',');
+    const double s = std::stod(t) == 0.0 ? 1.0 : kStretch;
+    const auto expected = expected_reactions(s, kPressure).at(name);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(std::stod(f[c]), expected[c], 1e-9) << "t = " << t << ", " << name << ", " << c;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 12);
+
+  // The same forces in the summary's outputs.
+  const auto& last = summary["outputs"].back()["reactions"];
+  const auto expected = expected_reactions(kStretch, kPressure);
+  ASSERT_EQ(last.size(), 6u);
+  for (const auto& [name, force] : expected)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(last[name][c].get<double>(), force[c], 1e-9) << name << ", " << c;
+  EXPECT_GT(expected.at("top")[2], 0.0);  // the top support pulls the stretched column up
+  fs::remove_all(out);
+}
+
+TEST(Reactions, OnlyBoundariesWithDisplacementConditions) {
+  const Config config = parse_case(column_case(), "column.toml");
+  const Mesh mesh = build_mesh(config, "");
+  BiphasicProblem problem(mesh, config);
+  const std::vector<double> y(problem.size(), 0.0);
+  EXPECT_THROW(problem.reactions({"nowhere"}, 0.0, y.data(), y.data()), std::invalid_argument);
+  const auto r = problem.reactions({"top", "x1"}, 0.0, y.data(), y.data());
+  ASSERT_EQ(r.size(), 2u);
+  // At rest with p = 0 in y (the Dirichlet values not applied) every force vanishes.
+  for (const auto& f : r)
+    for (double c : f) EXPECT_EQ(c, 0.0);
+}
+
+}  // namespace
+}  // namespace biphasic
