@@ -48,6 +48,31 @@ std::string ida_reason(int flag) {
   }
 }
 
+/// IDA needs consistent initial values: the momentum rows must hold at (t0, y0). A load or a
+/// prescribed displacement that is already nonzero at t0 (a step) leaves them out of balance;
+/// IDA's error test then fails at ever smaller steps. Throws a StepFailure naming the cause and
+/// the remedy when the imbalance exceeds what the displacement tolerance allows.
+void require_initial_equilibrium(BiphasicProblem& problem, double t0, const std::vector<double>& y,
+                                 double atol_displacement) {
+  const std::vector<double> zero(y.size(), 0.0);
+  std::vector<double> F(y.size());
+  problem.residual(t0, y.data(), zero.data(), F.data());
+  const double imbalance = problem.field_norms(F.data()).first;
+  const double allowed = atol_displacement * problem.stiffness_scale();
+  if (imbalance <= allowed) return;
+  std::ostringstream msg;
+  msg << "BDF cannot start at t = " << t0 << " s: the initial state is not in equilibrium "
+      << "(momentum residual " << imbalance << " N, allowed " << allowed
+      << " N = time.bdf.atol_displacement x stiffness): a load or prescribed displacement is "
+      << "already nonzero at t = " << t0
+      << " s, i.e. it jumps there, and IDA needs consistent initial values (it does not compute "
+         "the undrained response to a jump). Ramp the load up from zero over a short time "
+         "instead (a curve [[0.0, 0.0], [t_r, 1.0]] with t_r well below the times of interest), "
+         "or use time.integrator = \"backward_euler\", whose first step gives the undrained "
+         "response.";
+  throw StepFailure(msg.str());
+}
+
 }  // namespace
 
 std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
@@ -229,6 +254,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     if (bdf.initial_step > 0) check(IDASetInitStep(m.ida, bdf.initial_step), "IDASetInitStep");
   };
 
+  require_initial_equilibrium(problem, t0, y, bdf.atol_displacement);
   start(t0, y);
   const int outputs = planned_outputs();
   auto output_time = [&](int k) { return k == outputs ? t_end : t0 + k * m.time.dt; };
