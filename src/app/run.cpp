@@ -247,6 +247,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const int planned =
       std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
 
+  constexpr double kSummaryInterval = 1.0;  // s of wall time between summary refreshes
+  auto last_summary = Clock::now();
   auto observer = [&](const StepInfo& info, const std::vector<double>& ys,
                       const std::vector<double>& ydots) {
     nlohmann::json rec{{"step", info.step},
@@ -269,8 +271,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       mid = buf;
     }
     summary["steps"].push_back(rec);
-    record_counters(seconds_since(wall0));
-    write_json_atomically(summary_path, summary);
+    // Rewriting the whole summary after every step costs time quadratic in the steps (12 s of a
+    // 16 s run of 2000 steps); refresh it at outputs, at most once per second, and at the end.
+    if (output_now && seconds_since(last_summary) >= kSummaryInterval) {
+      record_counters(seconds_since(wall0));
+      write_json_atomically(summary_path, summary);
+      last_summary = Clock::now();
+    }
     char line[256];
     if (config.time.integrator == Integrator::Bdf) {
       std::snprintf(line, sizeof line,
