@@ -1,0 +1,55 @@
+#!/usr/bin/python3
+"""Ramp confined compression: platen stress against the finite-strain and linear solutions.
+
+usage: plot_confined_compression.py CSV_DIR FIG_DIR
+(reads CSV_DIR/confined_compression/, writes FIG_DIR/confined_compression.png) and prints the
+error table of every run.
+"""
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from verification_csv import print_errors, read, save  # noqa: E402
+
+
+def main():
+    csv_dir = pathlib.Path(sys.argv[1]) / "confined_compression"
+    fig_dir = pathlib.Path(sys.argv[2])
+    if not csv_dir.is_dir():
+        print("  no confined_compression/ results; skipped")
+        return
+    runs = sorted(p.stem for p in csv_dir.glob("*.csv") if not p.stem.endswith("_errors"))
+    fig, (ax_s, ax_e) = plt.subplots(1, 2, figsize=(12, 4.8))
+    base = read(csv_dir / f"{runs[0]}.csv")
+    t = [r["t"] for r in base]
+    ax_s.plot(t, [-r["stress_neo_hookean"] for r in base], "k-", label="Neo-Hookean, finite strain")
+    ax_s.plot(t, [-r["stress_linear"] for r in base], "k--", label="linear (Mow et al. 1980)")
+    for run, marker in zip(runs, "o^sv"):
+        rows = read(csv_dir / f"{run}.csv")
+        rows = rows[:: max(1, len(rows) // 60)]
+        ax_s.plot([r["t"] for r in rows], [-r["stress_computed"] for r in rows], marker, ms=3,
+                  mfc="none", label=run)
+        rows = read(csv_dir / f"{run}.csv")
+        ax_e.plot([r["t"] for r in rows],
+                  [abs(r["stress_computed"] / r["stress_neo_hookean"] - 1) for r in rows],
+                  label=run)
+    ax_s.set_xlabel("t [s]")
+    ax_s.set_ylabel("compressive platen stress −P_zz [MPa]")
+    ax_s.set_title("10 % ramp over 100 s, then hold (μ = 0.5, λ = 0, k = 1e-3, h = 1)",
+                   fontsize=9)
+    ax_s.legend(fontsize=8)
+    ax_e.axhline(5e-3, color="r", lw=0.8, ls="--", label="asserted bound 0.5 %")
+    ax_e.set_yscale("log")
+    ax_e.set_xlabel("t [s]")
+    ax_e.set_ylabel("|σ_h / σ_NH − 1|")
+    ax_e.set_title("relative error against the finite-strain reference")
+    ax_e.legend(fontsize=8)
+    save(fig, fig_dir, "confined_compression")
+    print_errors(csv_dir, [("max_relative_error", "max relative error"),
+                              ("max_top_bottom_imbalance", "top/bottom imbalance")])
+
+if __name__ == "__main__":
+    main()
