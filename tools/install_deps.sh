@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libsundials-dev libsuitesparse-dev libmetis-dev libeigen3-dev
   libgmsh-dev libhdf5-dev libtomlplusplus-dev nlohmann-json3-dev
-  libumfpack5 libmumps-seq-dev libopenblas0-pthread
+  libumfpack5 libmumps-seq-dev libopenblas0-pthread libhypre-dev libopenmpi-dev
   libgtest-dev python3 python3-numpy python3-matplotlib time
 )
 missing=()

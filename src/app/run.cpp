@@ -159,6 +159,28 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       << problem.pattern().nnz() << " Jacobian nonzeros (" << mesh_seconds << " s)";
     say(s.str());
   }
+  if (config.linear_solver.type == LinearSolverType::Iterative &&
+      config.stabilisation.type == Stabilisation::Gls) {
+    // The GLS term adds c_j c_e ∫ div f div δu to the displacement block: a grad–div penalty
+    // that algebraic multigrid handles poorly once it outweighs the solid's λ + 2μ.
+    double c_max = 0.0;
+    for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
+      c_max = std::max(c_max, problem.gls_coefficient(e));
+    const double ratio =
+        c_max / config.time.dt / (config.material.lambda + 2.0 * config.material.mu);
+    summary["gls_penalty_ratio"] = ratio;
+    const bool bdf = config.time.integrator == Integrator::Bdf;
+    if (ratio > 5.0 || bdf) {
+      std::ostringstream s;
+      s << "note: the GLS term c_j c_e outweighs the solid's lambda + 2 mu in the displacement "
+           "block ("
+        << (bdf ? "c_j = 1/h grows without bound on BDF's first steps"
+                : "ratio up to " + std::to_string(ratio) + " at this dt")
+        << "); the iterative solver's multigrid converges slowly or not at all there: a direct "
+           "solver or flux_perturbation stabilisation is the better choice";
+      say(s.str());
+    }
+  }
 
   // Observers: probe line, fields, per-step records.
   const Point a = config.output.line_start, b = config.output.line_end;
@@ -214,6 +236,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"factorizations", ls.factorizations},
                            {"refactorizations", ls.refactorizations},
                            {"linear_solves", ls.solves},
+                           {"krylov_iterations", ls.krylov_iterations},
+                           {"max_krylov_iterations", ls.max_krylov_iterations},
+                           {"amg_cycles", ls.amg_cycles},
                            {"fill_ratio", ls.fill}};
     if (config.time.integrator == Integrator::Bdf) {
       summary["counters"]["error_test_failures"] = is.error_test_failures;

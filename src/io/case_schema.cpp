@@ -64,7 +64,8 @@ const Names<Integrator>& integrator_names() {
 const Names<LinearSolverType>& linear_solver_names() {
   static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu},
                                              {"umfpack", LinearSolverType::Umfpack},
-                                             {"mumps", LinearSolverType::Mumps}};
+                                             {"mumps", LinearSolverType::Mumps},
+                                             {"iterative", LinearSolverType::Iterative}};
   return names;
 }
 
@@ -407,13 +408,39 @@ std::vector<Key<Config>> build_global_keys() {
 
   keys.push_back(choice_key<C>(
       "linear_solver.type", linear_solver_names(),
-      "Sparse direct solver: mumps and umfpack (multifrontal, BLAS-3; fast with OpenBLAS) or "
-      "klu (no BLAS; suits small problems).",
+      "Linear solver: mumps and umfpack (multifrontal, BLAS-3; fast with OpenBLAS), klu (no "
+      "BLAS; suits small problems), or iterative (FGMRES with BoomerAMG on the displacement "
+      "block and a pressure Schur-complement approximation; for meshes too large to factorise).",
       [](auto& c) -> auto& { return c.linear_solver.type; }));
   keys.push_back(choice_key<C>(
       "linear_solver.ordering", ordering_names(),
       "Fill-reducing ordering of the sparse factorisation.",
       [](auto& c) -> auto& { return c.linear_solver.ordering; }));
+  keys.push_back(number_key<C>(
+      "linear_solver.krylov.rtol", strictly_between(0, 1), "",
+      "Iterative solver: relative residual reduction per solve (fields scaled alike).",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.rtol; }));
+  keys.push_back(integer_key<C>(
+      "linear_solver.krylov.max_iterations", from_to(1, 100000), {},
+      "Iterative solver: FGMRES iterations allowed per solve.",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.max_iterations; }));
+  keys.push_back(integer_key<C>(
+      "linear_solver.krylov.restart", from_to(5, 1000), {},
+      "Iterative solver: Krylov vectors kept before FGMRES restarts.",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.restart; }));
+  keys.push_back(number_key<C>(
+      "linear_solver.krylov.amg_threshold", strictly_between(0, 1), "",
+      "Iterative solver: BoomerAMG strong-connection threshold on the displacement block.",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.amg_threshold; }));
+  keys.push_back(integer_key<C>(
+      "linear_solver.krylov.amg_cycles", from_to(1, 10), {},
+      "Iterative solver: AMG V-cycles per preconditioner application.",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.amg_cycles; }));
+  keys.push_back(number_key<C>(
+      "linear_solver.krylov.block_rtol", at_least(0), "",
+      "Iterative solver: if > 0, solve the displacement block by inner GMRES + AMG to this "
+      "relative residual in each preconditioner application; 0 = V-cycles only.",
+      [](auto& c) -> auto& { return c.linear_solver.krylov.block_rtol; }));
 
   keys.push_back(vector_key<C>(
       "output.line_start", "mm", "Start point of the probe line.",

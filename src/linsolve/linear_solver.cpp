@@ -1,5 +1,6 @@
 #include "biphasic/linsolve/linear_solver.hpp"
 
+#include <stdexcept>
 #include <utility>
 
 #include "biphasic/assembly/sparsity.hpp"
@@ -9,13 +10,16 @@ namespace biphasic {
 void LinearSolverDeleter::operator()(_generic_SUNLinearSolver* s) const { SUNLinSolFree(s); }
 
 FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern) {
-  if (config.ordering != Ordering::Metis || config.type == LinearSolverType::Umfpack) return {};
+  if (config.ordering != Ordering::Metis || config.type == LinearSolverType::Umfpack ||
+      config.type == LinearSolverType::Iterative)
+    return {};
   const std::vector<Index> nodal = pattern.nested_dissection_order();
   return FillOrder(nodal.begin(), nodal.end());
 }
 
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
-                                   LinearSolverStats* stats, FillOrder order) {
+                                   LinearSolverStats* stats, FillOrder order,
+                                   const SaddlePointStructure* saddle) {
   switch (config.type) {
     case LinearSolverType::Klu:
       return make_klu_solver(config.ordering, ctx, stats, std::move(order));
@@ -23,6 +27,10 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
       return make_umfpack_solver(config.ordering, ctx, stats, std::move(order));
     case LinearSolverType::Mumps:
       return make_mumps_solver(config.ordering, ctx, stats, std::move(order));
+    case LinearSolverType::Iterative:
+      if (!saddle)
+        throw std::invalid_argument("the iterative linear solver needs the saddle-point structure");
+      return make_iterative_solver(config.krylov, *saddle, ctx, stats);
   }
   return nullptr;
 }

@@ -365,4 +365,32 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
   stats_.jacobian_seconds += seconds_since(t0);
 }
 
+void BiphasicProblem::pressure_schur_term(double cj, double cj_gls,
+                                          std::vector<PressureEntry>& out) const {
+  const double modulus = params_.material.lambda + 2.0 * params_.material.mu;
+  out.reserve(out.size() + 16 * mesh_.tets.size());
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+    double volume = 0.0;
+    for (const PointGeometry& g : geometry_[e]) volume += g.weight;
+    const double w = cj / (modulus + cj_gls * gls_coefficient(static_cast<Index>(e)));
+    const Tet10& tet = mesh_.tets[e];
+    // P1 mass matrix of a tetrahedron: V/20 (1 + δ_ab).
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        out.push_back({tet[a], tet[b], w * volume / 20.0 * (a == b ? 2.0 : 1.0)});
+  }
+}
+
+SaddlePointStructure BiphasicProblem::saddle_point_structure(
+    std::function<std::pair<double, double>()> shifts) const {
+  SaddlePointStructure s;
+  s.num_u = num_u();
+  s.constrained = constrained_;
+  s.schur_term = [this, shifts = std::move(shifts)](std::vector<PressureEntry>& out) {
+    const auto [cj, cj_gls] = shifts();
+    pressure_schur_term(cj, cj_gls, out);
+  };
+  return s;
+}
+
 }  // namespace biphasic

@@ -108,7 +108,11 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
   m.fscale = N_VNew_Serial(n, m.ctx);
   N_VConst(1.0, m.uscale);
   m.A = pat.new_matrix(m.ctx);
-  m.ls = make_linear_solver(linear_solver, m.ctx, &ls_stats_, fill_order(linear_solver, pat));
+  const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
+    return std::pair{1.0 / m.dt, 1.0 / m.dt};
+  });
+  m.ls =
+      make_linear_solver(linear_solver, m.ctx, &ls_stats_, fill_order(linear_solver, pat), &saddle);
   m.y_old.assign(n, 0.0);
   m.ydot.assign(n, 0.0);
   m.last_residual.assign(n, 0.0);

@@ -105,7 +105,11 @@ std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
       values[q] = differentiated ? A0[q] : A1[q] - A0[q];
     }
   LinearSolverStats stats;
-  LinearSolverPtr ls = make_linear_solver(solver, sc.ctx, &stats, fill_order(solver, pat));
+  // Displacement rows without the c_j-scaled GLS term, pressure rows ∂F/∂ẏ (shift 1).
+  const SaddlePointStructure saddle = problem.saddle_point_structure([] {
+    return std::pair{1.0, 0.0};
+  });
+  LinearSolverPtr ls = make_linear_solver(solver, sc.ctx, &stats, fill_order(solver, pat), &saddle);
   N_Vector x = N_VNew_Serial(n, sc.ctx);
   N_Vector b = N_VMake_Serial(n, rhs.data(), sc.ctx);
   const int setup = SUNLinSolSetup(ls.get(), M);
@@ -132,6 +136,7 @@ struct BdfIntegrator::Impl {
   SUNMatrix A = nullptr;
   LinearSolverPtr ls;
   std::string failure;
+  double cj = 1.0;  ///< shift of the last Jacobian [1/s]
 
   Impl(BiphasicProblem& p, const TimeConfig& tc, const LinearSolverConfig& lc, std::string log)
       : problem(p), time(tc), solver(lc), step_log_path(std::move(log)) {}
@@ -159,6 +164,7 @@ struct BdfIntegrator::Impl {
                          void* data, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
     self->problem.pattern().restore_into(J);
+    self->cj = cj;
     try {
       self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
                              SUNSparseMatrix_Data(J));
@@ -182,8 +188,11 @@ BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
   for (Index i = 0; i < n; ++i)
     NV_Ith_S(m.atol, i) = i < problem.num_u() ? time.bdf.atol_displacement : time.bdf.atol_pressure;
   m.A = problem.pattern().new_matrix(m.sc.ctx);
+  const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
+    return std::pair{m.cj, m.cj};
+  });
   m.ls = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
-                            fill_order(linear_solver, problem.pattern()));
+                            fill_order(linear_solver, problem.pattern()), &saddle);
   stats_.order_counts.assign(5, 0);
 }
 

@@ -42,7 +42,7 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
   problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
 
   LinearSolverStats stats;
-  LinearSolverPtr ls = make_linear_solver({GetParam().first, GetParam().second}, ctx, &stats);
+  LinearSolverPtr ls = make_linear_solver({GetParam().first, GetParam().second, {}}, ctx, &stats);
   N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx), r = N_VNew_Serial(n, ctx);
   std::mt19937 gen(1);
   std::uniform_real_distribution<double> d(-1.0, 1.0);
@@ -86,7 +86,7 @@ TEST(DirectSolvers, SameAnswerWhicheverSolver) {
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   std::vector<double> reference;
   for (const SolverChoice& choice : kChoices) {
-    cfg.linear_solver = {choice.first, choice.second};
+    cfg.linear_solver = {choice.first, choice.second, {}};
     BiphasicProblem problem(mesh, cfg);
     BackwardEuler integrator(problem, cfg.time, cfg.linear_solver);
     std::vector<double> y(problem.size(), 0.0);

@@ -54,11 +54,12 @@ std::vector<std::string> split(const std::string& s) {
 
 /// One (mesh, solver) measurement; returns a CSV line.
 std::string measure(double lc, const std::string& solver_name, int repeat) {
-  const LinearSolverType solver = solver_name == "klu"       ? LinearSolverType::Klu
-                                  : solver_name == "umfpack" ? LinearSolverType::Umfpack
-                                                             : LinearSolverType::Mumps;
+  const LinearSolverType solver = solver_name == "klu"         ? LinearSolverType::Klu
+                                  : solver_name == "umfpack"   ? LinearSolverType::Umfpack
+                                  : solver_name == "iterative" ? LinearSolverType::Iterative
+                                                               : LinearSolverType::Mumps;
   Config cfg = paper_reference_config(lc);
-  cfg.linear_solver = {solver, Ordering::Metis};
+  cfg.linear_solver = {solver, Ordering::Metis, {}};
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   BiphasicProblem problem(mesh, cfg);
   const Index n = problem.size();
@@ -86,7 +87,12 @@ std::string measure(double lc, const std::string& solver_name, int repeat) {
   auto t0 = Clock::now();
   FillOrder order = fill_order(cfg.linear_solver, problem.pattern());
   const double ordering_seconds = seconds_since(t0);  // counted as part of the analysis
-  LinearSolverPtr ls = make_linear_solver(cfg.linear_solver, ctx, &stats, std::move(order));
+  const double cj = 1.0 / 6.4;
+  const SaddlePointStructure saddle = problem.saddle_point_structure([cj] {
+    return std::pair{cj, cj};
+  });
+  LinearSolverPtr ls =
+      make_linear_solver(cfg.linear_solver, ctx, &stats, std::move(order), &saddle);
   N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx);
   std::copy(F.begin(), F.end(), N_VGetArrayPointer(b));
   SUNLinSolInitialize(ls.get());
@@ -137,7 +143,7 @@ int main(int argc, char** argv) {
     else if (a == "--csv")
       csv_path = next();
     else {
-      std::cerr << "usage: biphasic_bench [--lc 1.3,0.98] [--solvers klu,umfpack,mumps] "
+      std::cerr << "usage: biphasic_bench [--lc 1.3,0.98] [--solvers klu,umfpack,mumps,iterative] "
                    "[--repeat N] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }

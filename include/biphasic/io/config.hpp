@@ -107,14 +107,32 @@ struct TimeConfig {
   BdfConfig bdf;
 };
 
-enum class LinearSolverType { Klu, Umfpack, Mumps };
+/// Klu, Umfpack, Mumps: sparse direct. Iterative: SUNDIALS FGMRES with a block-triangular
+/// preconditioner (BoomerAMG on the displacement block, a pressure Schur-complement
+/// approximation), for meshes where a factorisation runs out of time or memory.
+enum class LinearSolverType { Klu, Umfpack, Mumps, Iterative };
 enum class Ordering { Amd, Colamd, Metis };
 
 /// Default: MUMPS with METIS ordering, the fastest of the three on the paper's meshes
 /// (docs/performance.md).
+/// Settings of the iterative solver (ignored by the direct ones).
+struct KrylovConfig {
+  /// Stop when the residual's 2-norm falls below rtol times the right-hand side's. Tight by
+  /// default, so that the Newton iteration converges as with a direct solver.
+  double rtol = 1e-8;
+  int max_iterations = 500;    ///< FGMRES iterations per solve (restarts included)
+  int restart = 100;           ///< Krylov vectors kept before a restart
+  double amg_threshold = 0.5;  ///< BoomerAMG strong-connection threshold [-]
+  int amg_cycles = 1;          ///< V-cycles per application to the displacement block
+  /// > 0: the displacement block is solved by inner GMRES + AMG to this relative residual
+  /// (needed when the GLS term dominates the block: c_j c_e ≫ λ + 2μ); 0: V-cycles only.
+  double block_rtol = 0.0;
+};
+
 struct LinearSolverConfig {
   LinearSolverType type = LinearSolverType::Mumps;
   Ordering ordering = Ordering::Metis;
+  KrylovConfig krylov;
 };
 
 struct OutputConfig {

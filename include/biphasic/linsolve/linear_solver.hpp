@@ -6,6 +6,7 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +24,10 @@ struct LinearSolverStats {
   double analysis_seconds = 0.0;
   double factor_seconds = 0.0;
   double solve_seconds = 0.0;
-  double fill = 0.0;  ///< nnz(L + U) / nnz(A) of the last factorisation
+  double fill = 0.0;               ///< nnz(L + U) / nnz(A) of the last factorisation
+  long krylov_iterations = 0;      ///< iterative solver: FGMRES iterations over all solves
+  long max_krylov_iterations = 0;  ///< iterative solver: most FGMRES iterations of one solve
+  long amg_cycles = 0;             ///< iterative solver: AMG V-cycles on the displacement block
 };
 
 /// Deleter for SUNLinearSolver handles.
@@ -38,14 +42,32 @@ using FillOrder = std::vector<sunindextype>;
 
 class SparsityPattern;
 
+/// One entry of a matrix on the pressure unknowns (indices counted from the first pressure).
+struct PressureEntry {
+  sunindextype row, col;
+  double value;
+};
+
+/// What the iterative solver's block preconditioner needs beyond the matrix: which unknowns
+/// are displacements, which rows are Dirichlet rows, and an approximation of the Schur
+/// complement's coupling term −A_pu A_uu⁻¹ A_up for the matrix being set up.
+struct SaddlePointStructure {
+  sunindextype num_u = 0;         ///< unknowns [0, num_u) are displacements, 3 per node
+  std::vector<char> constrained;  ///< Dirichlet rows (diagonal rows of the matrix)
+  /// Appends the coupling term's entries (symmetric, free pressures only) to `out`.
+  std::function<void(std::vector<PressureEntry>& out)> schur_term;
+};
+
 /// The pivot order to hand to the configured solver for this pattern: with METIS, nested
 /// dissection of the node graph (several times cheaper than METIS on the matrix, and as good),
 /// except for UMFPACK, whose own METIS ordering suits its strategy better; otherwise empty.
 FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern);
 
-/// The solver the configuration names. `stats` must outlive the solver.
+/// The solver the configuration names. `stats` must outlive the solver. The iterative solver
+/// needs `saddle` (and throws std::invalid_argument without it); the direct ones ignore it.
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
-                                   LinearSolverStats* stats, FillOrder order = {});
+                                   LinearSolverStats* stats, FillOrder order = {},
+                                   const SaddlePointStructure* saddle = nullptr);
 
 /// KLU (SuiteSparse) with AMD, COLAMD or METIS nested-dissection ordering. Unlike SUNDIALS'
 /// SUNLinSol_KLU, re-initialisation by KINSol/IDAReInit keeps the symbolic analysis; the
@@ -63,5 +85,13 @@ LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSol
 /// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup.
 LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
                                   FillOrder order = {});
+
+/// Right-preconditioned FGMRES (SUNDIALS SPFGMR) on the whole system, solved to
+/// `config.rtol` so that Newton sees an exact solve, with the block upper-triangular
+/// preconditioner P = [Ã_uu A_up; 0 S̃]: Ã_uu⁻¹ = BoomerAMG V-cycles on the displacement block
+/// (hypre, 3 functions per node), S̃ = A_pp + Schur coupling term from `saddle`, factorised
+/// by sparse Cholesky (LDLᵀ). Counts a preconditioner set-up as a factorisation.
+LinearSolverPtr make_iterative_solver(const KrylovConfig& config, SaddlePointStructure saddle,
+                                      SUNContext ctx, LinearSolverStats* stats);
 
 }  // namespace biphasic

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 
 #include "biphasic/assembly/sparsity.hpp"
 #include "biphasic/io/config.hpp"
+#include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
 
 namespace biphasic {
@@ -72,6 +74,17 @@ class BiphasicProblem {
   double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
   /// β = scale · h_e² / (4 H_A) of the flux perturbation (0 without it) [mm⁴ N⁻¹].
   double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
+
+  /// Approximation of the Schur-complement coupling −A_pu A_uu⁻¹ A_up of a matrix
+  /// dF/dy + c_j dF/dẏ whose displacement rows carry the GLS term with shift `cj_gls`:
+  /// element P1 mass matrices (reference volume) times c_j / (λ + 2μ + cj_gls c_e), i.e. the
+  /// div–div stiffness of the displacement block seen by a pressure mode [mm³ MPa⁻¹ s⁻¹].
+  /// Entries by pressure index (vertex), Dirichlet pressures included.
+  void pressure_schur_term(double cj, double cj_gls, std::vector<PressureEntry>& out) const;
+  /// The structure the iterative solver needs; `shifts()` returns (c_j, cj_gls) of the matrix
+  /// being set up. The problem must outlive the solver.
+  SaddlePointStructure saddle_point_structure(
+      std::function<std::pair<double, double>()> shifts) const;
 
   AssemblyStats& stats() { return stats_; }
   /// Stiffness scale H_A · (mean element size) [N/mm]: turns a displacement into a force, e.g.
