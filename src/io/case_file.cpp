@@ -229,6 +229,25 @@ Read read_string_list(const toml::node& node, const KeyInfo& key) {
   return Read{Value{out}, {}};
 }
 
+/// A formula: a string that parses, or a number (taken as that constant).
+Read read_expression(const toml::node& node) {
+  std::string text;
+  if (const auto* s = node.as_string()) {
+    text = s->get();
+  } else if (const auto v = as_number(node)) {
+    if (!std::isfinite(*v)) return fail("must be a finite number");
+    text = format_number(*v);
+  } else {
+    return fail("expected a formula (a string such as \"0.1 * sin(pi * x) * t\") or a number");
+  }
+  try {
+    Expression::parse(text);
+  } catch (const ExpressionError& error) {
+    return fail(error.what());
+  }
+  return Read{Value{text}, {}};
+}
+
 /// Reads `node` as the kind of value `key` holds and checks its range or choices.
 Read read_value(const toml::node& node, const KeyInfo& key) {
   switch (key.kind) {
@@ -257,6 +276,8 @@ Read read_value(const toml::node& node, const KeyInfo& key) {
       return read_vector(node, key);
     case Kind::StringList:
       return read_string_list(node, key);
+    case Kind::Expression:
+      return read_expression(node);
     case Kind::Curve:
       break;
   }

@@ -188,6 +188,16 @@ Key<Target> string_list_key(std::string path, std::vector<std::string> choices, 
   return key;
 }
 
+template <class Target, class Access>
+Key<Target> expression_key(std::string path, std::string unit, std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Expression, std::move(unit), std::move(help));
+  key.store = [access](Target& t, const Value& v) {
+    access(t) = Expression::parse(std::get<std::string>(v));
+  };
+  key.fetch = [access](const Target& t) -> Value { return std::string{access(t).text()}; };
+  return key;
+}
+
 /// Per-type rule: `required` types must give the key, `forbidden` ones must not, others may.
 std::array<Need, kBcTypeCount> needs(std::initializer_list<BcType> required,
                                      std::initializer_list<BcType> forbidden) {
@@ -317,6 +327,22 @@ std::vector<Key<Config>> build_global_keys() {
                            "point, times strictly increasing; constant before the first and "
                            "after the last point. Referenced by boundary[i].curve.");
   keys.push_back(curve);
+
+  const std::array<std::string, 3> axes{"x", "y", "z"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    keys.push_back(expression_key<C>(
+        "body_force." + axes[i], "N/mm^3",
+        "Component " + axes[i] +
+            " of the body force b per unit reference volume, a formula of "
+            "x, y, z (reference position, mm) and t (s); enters the momentum balance as "
+            "-Div P = b.",
+        [i](auto& c) -> auto& { return c.loads.body_force[i]; }));
+  }
+  keys.push_back(expression_key<C>(
+      "fluid_source.value", "1/s",
+      "Volumetric fluid source s per unit reference volume, a formula of x, y, z and t; the "
+      "mass balance reads dJ/dt + Div W = s (W the reference seepage), so s > 0 injects fluid.",
+      [](auto& c) -> auto& { return c.loads.fluid_source; }));
 
   keys.push_back(choice_key<C>(
       "stabilisation.type", stabilisation_names(),
@@ -543,6 +569,8 @@ std::string kind_name(Kind kind) {
       return "array of strings";
     case Kind::Curve:
       return "array of [t, value]";
+    case Kind::Expression:
+      return "formula";
   }
   return "";
 }
@@ -577,6 +605,8 @@ std::string allowed_text(const KeyInfo& key) {
       return key.choices.empty() ? "distinct names" : "each one of " + code_list(key.choices);
     case Kind::Curve:
       return ">= 1 point, t strictly increasing";
+    case Kind::Expression:
+      return "see *Formulas*";
   }
   return "";
 }

@@ -26,6 +26,7 @@ enum class Kind {
   Vector3,     ///< array of exactly 3 numbers
   StringList,  ///< array of strings, each from `choices`
   Curve,       ///< array of [t, value] pairs (only under [curves])
+  Expression,  ///< formula of x, y, z, t (string; a number is taken as a constant formula)
 };
 
 /// Whether a [[boundary]] key must, may or must not appear for a given boundary type.

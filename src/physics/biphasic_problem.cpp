@@ -82,6 +82,14 @@ int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
   return axis;
 }
 
+/// ∂f/∂t by a central difference with step 6e-6·max(1, |t|) (≈ ε^(1/3): truncation and
+/// rounding errors balance near 1e-11 relative for smooth fields).
+template <class Field>
+auto central_rate(const Field& f, const Vec3& X, double t) {
+  const double h = 6e-6 * std::max(1.0, std::abs(t));
+  return (f(X, t + h) - f(X, t - h)) / (2.0 * h);
+}
+
 }  // namespace
 
 BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
@@ -91,6 +99,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
 
   // Reference geometry per element and quadrature point; GLS coefficients.
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
+  for (const QuadraturePoint& qp : rule.points) point_p2_.push_back(p2_values(qp.xi));
   geometry_.resize(mesh.tets.size());
   const bool gls = config.stabilisation.type == Stabilisation::Gls;
   const bool flux = config.stabilisation.type == Stabilisation::FluxPerturbation;
@@ -122,7 +131,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   // Boundary conditions by physical-group name.
   constrained_.assign(pattern_.size(), 0);
   std::map<Index, std::size_t> owner;  // constrained dof → index of its boundary condition
-  auto constrain = [&](std::size_t i, Index dof, double value, const LoadCurve* curve) {
+  auto constrain = [&](std::size_t i, Index dof, double value, const LoadCurve* curve, Index node,
+                       int field) {
     auto [it, inserted] = owner.emplace(dof, i);
     if (!inserted) {
       const Dirichlet& d = *std::find_if(dirichlet_.begin(), dirichlet_.end(),
@@ -132,7 +142,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
                                bc_label(it->second, config.bcs[it->second]) +
                                " on the same unknown (dof " + std::to_string(dof) + ")");
     }
-    dirichlet_.push_back({dof, value, curve});
+    dirichlet_.push_back({dof, value, curve, node, field});
     constrained_[dof] = 1;
   };
   // Opposite corner of each boundary face's tetrahedron (built on first use) orients normals.
@@ -176,13 +186,14 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
         std::vector<Index>& held = held_rows_[bc.boundary];
         for (Index n : nodes) {
           const Index dof = pattern_.u_dof(n, axis);
-          constrain(i, dof, symmetry ? 0.0 : bc.value, symmetry ? nullptr : curve);
+          constrain(i, dof, symmetry ? 0.0 : bc.value, symmetry ? nullptr : curve, n,
+                    symmetry ? -1 : axis);
           held.push_back(dof);
         }
         break;
       }
       case BcType::Pressure:
-        for (Index v : vertices) constrain(i, pattern_.p_dof(v), bc.value, curve);
+        for (Index v : vertices) constrain(i, pattern_.p_dof(v), bc.value, curve, v, 3);
         break;
       case BcType::Flux:
       case BcType::Traction:
@@ -212,7 +223,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
         }
         NodalLoad nl{{}, bc.type == BcType::Traction ? 1.0 : bc.value, curve};
         nl.entries.assign(load.begin(), load.end());
-        loads_.push_back(std::move(nl));
+        nodal_loads_.push_back(std::move(nl));
         break;
       }
     }
@@ -220,6 +231,117 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  }
+
+  // Body force and fluid source formulas of the case, with their exact t-derivatives.
+  const auto& bf = config.loads.body_force;
+  const Expression& source = config.loads.fluid_source;
+  if (!(bf[0].is_zero() && bf[1].is_zero() && bf[2].is_zero() && source.is_zero())) {
+    check_load_formulas(config, 0.0);
+    check_load_formulas(config, config.time.t_end);
+  }
+  if (!(bf[0].is_zero() && bf[1].is_zero() && bf[2].is_zero())) {
+    using V = Expression::Variable;
+    auto field = [](std::array<Expression, 3> f) {
+      return [f](const Vec3& X, double t) {
+        return Vec3(f[0](X(0), X(1), X(2), t), f[1](X(0), X(1), X(2), t),
+                    f[2](X(0), X(1), X(2), t));
+      };
+    };
+    set_body_force(field(bf),
+                   field({bf[0].derivative(V::T), bf[1].derivative(V::T), bf[2].derivative(V::T)}));
+  }
+  if (!source.is_zero()) {
+    auto field = [](Expression f) {
+      return [f](const Vec3& X, double t) { return f(X(0), X(1), X(2), t); };
+    };
+    set_fluid_source(field(source), field(source.derivative(Expression::Variable::T)));
+  }
+}
+
+void BiphasicProblem::check_load_formulas(const Config& config, double t) const {
+  const auto& loads = config.loads;
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
+    for (std::size_t q = 0; q < point_p2_.size(); ++q) {
+      const Vec3 X = point_position(static_cast<Index>(e), q);
+      for (int c = 0; c < 4; ++c) {
+        const Expression& f = c < 3 ? loads.body_force[c] : loads.fluid_source;
+        const double v = f(X(0), X(1), X(2), t);
+        if (std::isfinite(v)) continue;
+        std::ostringstream msg;
+        msg << (c < 3 ? std::string("body_force.") + "xyz"[c] : std::string("fluid_source.value"))
+            << " = \"" << f.text() << "\" is "
+            << (std::isnan(v) ? "NaN"
+                : v > 0       ? "+inf"
+                              : "-inf")
+            << " at X = (" << X(0) << ", " << X(1) << ", " << X(2) << ") mm, t = " << t
+            << " s (a quadrature point of element " << e << ")";
+        throw std::runtime_error(msg.str());
+      }
+    }
+}
+
+Vec3 BiphasicProblem::point_position(Index e, std::size_t q) const {
+  Vec3 X = Vec3::Zero();
+  for (int a = 0; a < 10; ++a) X += point_p2_[q](a) * node_vec(mesh_, mesh_.tets[e][a]);
+  return X;
+}
+
+void BiphasicProblem::set_body_force(VectorField b, VectorField rate) {
+  loads_.b = std::move(b);
+  loads_.b_rate = loads_.b ? std::move(rate) : VectorField{};
+  load_cache_.clear();
+}
+
+void BiphasicProblem::set_fluid_source(ScalarField s, ScalarField rate) {
+  loads_.s = std::move(s);
+  loads_.s_rate = loads_.s ? std::move(rate) : ScalarField{};
+  load_cache_.clear();
+}
+
+void BiphasicProblem::set_dirichlet_fields(VectorField u, ScalarField p, VectorField u_rate,
+                                           ScalarField p_rate) {
+  dirichlet_fields_.u = std::move(u);
+  dirichlet_fields_.u_rate = dirichlet_fields_.u ? std::move(u_rate) : VectorField{};
+  dirichlet_fields_.p = std::move(p);
+  dirichlet_fields_.p_rate = dirichlet_fields_.p ? std::move(p_rate) : ScalarField{};
+}
+
+double BiphasicProblem::dirichlet_value(const Dirichlet& d, double t) const {
+  const DirichletFields& f = dirichlet_fields_;
+  if (d.field >= 0 && d.field < 3 && f.u) return f.u(node_vec(mesh_, d.node), t)(d.field);
+  if (d.field == 3 && f.p) return f.p(node_vec(mesh_, d.node), t);
+  return d.value * curve_value(d.curve, t);
+}
+
+double BiphasicProblem::dirichlet_rate(const Dirichlet& d, double t) const {
+  const DirichletFields& f = dirichlet_fields_;
+  const Vec3 X = node_vec(mesh_, d.node);
+  if (d.field >= 0 && d.field < 3 && f.u)
+    return (f.u_rate ? f.u_rate(X, t) : central_rate(f.u, X, t))(d.field);
+  if (d.field == 3 && f.p) return f.p_rate ? f.p_rate(X, t) : central_rate(f.p, X, t);
+  return d.curve ? d.value * d.curve->slope(t) : 0.0;
+}
+
+void BiphasicProblem::add_volume_loads(double t, bool rate, double* out) const {
+  const VolumeLoads& L = loads_;
+  if (!L.b && !L.s) return;
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+    const Tet10& tet = mesh_.tets[e];
+    for (std::size_t q = 0; q < point_p2_.size(); ++q) {
+      const PointGeometry& g = geometry_[e][q];
+      const Vec3 X = point_position(static_cast<Index>(e), q);
+      if (L.b) {
+        const Vec3 b = !rate ? L.b(X, t) : L.b_rate ? L.b_rate(X, t) : central_rate(L.b, X, t);
+        for (int a = 0; a < 10; ++a)
+          for (int i = 0; i < 3; ++i)
+            out[pattern_.u_dof(tet[a], i)] -= g.weight * point_p2_[q](a) * b(i);
+      }
+      if (L.s) {
+        const double s = !rate ? L.s(X, t) : L.s_rate ? L.s_rate(X, t) : central_rate(L.s, X, t);
+        for (int c = 0; c < 4; ++c) out[pattern_.p_dof(tet[c])] -= g.weight * g.Np(c) * s;
+      }
+    }
   }
 }
 
@@ -232,8 +354,8 @@ std::vector<double> BiphasicProblem::breakpoints() const {
 
 void BiphasicProblem::apply_dirichlet(double t, double* y, double* ydot) const {
   for (const Dirichlet& d : dirichlet_) {
-    y[d.dof] = d.value * curve_value(d.curve, t);
-    if (ydot) ydot[d.dof] = d.curve ? d.value * d.curve->slope(t) : 0.0;
+    y[d.dof] = dirichlet_value(d, t);
+    if (ydot) ydot[d.dof] = dirichlet_rate(d, t);
   }
 }
 
@@ -293,9 +415,19 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
     const Tet10& tet = mesh_.tets[e];
     for (int s = 0; s < kElementDofs; ++s) F[pattern_.global_dof(tet, s)] += out.residual(s);
   });
-  for (const NodalLoad& l : loads_) {
+  for (const NodalLoad& l : nodal_loads_) {
     const double scale = l.value * curve_value(l.curve, t);
     for (const auto& [row, amount] : l.entries) F[row] += scale * amount;
+  }
+  if (loads_.b || loads_.s) {
+    // The volume loads do not depend on y: computed once per time, reused by the Newton
+    // iterations at that time.
+    if (load_cache_.empty() || load_cache_t_ != t) {
+      load_cache_.assign(size(), 0.0);
+      add_volume_loads(t, false, load_cache_.data());
+      load_cache_t_ = t;
+    }
+    for (Index i = 0; i < size(); ++i) F[i] += load_cache_[i];
   }
 }
 
@@ -320,10 +452,8 @@ std::vector<std::array<double, 3>> BiphasicProblem::reactions(
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   assemble(t, y, ydot, F);
-  for (const Dirichlet& d : dirichlet_) {
-    const double s = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
-    F[d.dof] = s * (y[d.dof] - d.value * curve_value(d.curve, t));
-  }
+  for (const Dirichlet& d : dirichlet_)
+    F[d.dof] = dirichlet_scale(d) * (y[d.dof] - dirichlet_value(d, t));
   ++stats_.residual_evaluations;
   stats_.residual_seconds += seconds_since(t0);
 }
@@ -340,16 +470,14 @@ std::pair<double, double> BiphasicProblem::field_norms(const double* F) const {
 
 void BiphasicProblem::time_derivative(double t, double* dFdt) const {
   std::fill(dFdt, dFdt + size(), 0.0);
-  for (const NodalLoad& l : loads_) {
+  for (const NodalLoad& l : nodal_loads_) {
     if (!l.curve) continue;
     const double rate = l.value * l.curve->slope(t);
     for (const auto& [row, amount] : l.entries) dFdt[row] += rate * amount;
   }
-  for (const Dirichlet& d : dirichlet_) {
-    if (!d.curve) continue;
-    const double s = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
-    dFdt[d.dof] = -s * d.value * d.curve->slope(t);
-  }
+  add_volume_loads(t, true, dFdt);
+  // Every Dirichlet row, also those without a curve: loads on their nodes do not reach them.
+  for (const Dirichlet& d : dirichlet_) dFdt[d.dof] = -dirichlet_scale(d) * dirichlet_rate(d, t);
 }
 
 void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot, double cj,
@@ -359,8 +487,7 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
   for_each_element(true, y, ydot, [&](Index e, const ElementOutput& out) {
     pattern_.scatter(e, mesh_.tets[e], out.dfdy, out.dfdydot, cj, constrained_, values);
   });
-  for (const Dirichlet& d : dirichlet_)
-    values[pattern_.find(d.dof, d.dof)] = d.dof < num_u() ? row_scale_u_ : row_scale_p_;
+  for (const Dirichlet& d : dirichlet_) values[pattern_.find(d.dof, d.dof)] = dirichlet_scale(d);
   ++stats_.jacobian_evaluations;
   stats_.jacobian_seconds += seconds_since(t0);
 }

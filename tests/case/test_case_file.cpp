@@ -581,8 +581,9 @@ line_end = [0, 0, 4]
   EXPECT_FALSE(j["boundary"][1].contains("component"));
 
   // Every section of the case file appears.
-  for (const char* section : {"mesh", "material", "curves", "boundary", "stabilisation",
-                              "quadrature", "time", "linear_solver", "output"}) {
+  for (const char* section :
+       {"mesh", "material", "curves", "boundary", "body_force", "fluid_source", "stabilisation",
+        "quadrature", "time", "linear_solver", "output"}) {
     EXPECT_TRUE(j.contains(section)) << section;
   }
   EXPECT_EQ(j["time"]["newton"].size(), 7u);
@@ -590,6 +591,8 @@ line_end = [0, 0, 4]
   EXPECT_EQ(j["mesh"]["column"].size(), 8u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
+  EXPECT_EQ(j["body_force"]["y"], "0");
+  EXPECT_EQ(j["fluid_source"]["value"], "0");
 }
 
 TEST(CaseFile, GeneratedColumnAndSphereOctant) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "biphasic/io/expression.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 
 namespace biphasic {
@@ -45,6 +46,14 @@ enum class BcType {
   Flux,            ///< outward normal flux q̄ = value · curve(t) [mm/s]
   Traction,        ///< nominal (dead) traction vector · curve(t) [MPa]
   NormalTraction,  ///< nominal traction −value · curve(t) · N (reference normal) [MPa]
+};
+
+/// Volume loads given as formulas of the reference position X = (x, y, z) [mm] and time t [s],
+/// per unit reference volume. The momentum rows gain −∫Ω₀ f·b dX and the mass rows −∫Ω₀ g s dX,
+/// i.e. the balances read −Div P = b and J̇ + Div W = s (W = −k J C⁻¹∇₀p, the reference seepage).
+struct VolumeLoadConfig {
+  std::array<Expression, 3> body_force;  ///< b [N/mm³]; all zero = none
+  Expression fluid_source;               ///< s [1/s]; zero = none
 };
 
 struct BoundaryCondition {
@@ -157,6 +166,7 @@ struct Config {
   MaterialConfig material;
   std::map<std::string, LoadCurve> curves;
   std::vector<BoundaryCondition> bcs;
+  VolumeLoadConfig loads;
   StabilisationConfig stabilisation;
   int quadrature_points = 4;  ///< 1, 4 (paper), 5, 8, 27, 64, 125
   TimeConfig time;

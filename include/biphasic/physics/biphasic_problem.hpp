@@ -26,6 +26,11 @@ struct AssemblyStats {
   double jacobian_seconds = 0.0;
 };
 
+/// A scalar field of the reference position X [mm] and time t [s].
+using ScalarField = std::function<double(const Vec3& X, double t)>;
+/// A vector field of the reference position X [mm] and time t [s].
+using VectorField = std::function<Vec3(const Vec3& X, double t)>;
+
 /// Thrown when an element inverts (det F ≤ 0) during an evaluation.
 struct InvertedElement : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -33,9 +38,28 @@ struct InvertedElement : std::runtime_error {
 
 class BiphasicProblem {
  public:
-  /// Resolves boundary conditions by name, builds the geometry cache and the pattern.
-  /// Throws std::runtime_error naming the boundary condition on inconsistent input.
+  /// Resolves boundary conditions by name, builds the geometry cache and the pattern, and
+  /// takes the body force and fluid source formulas of config.loads (checked to be finite at
+  /// every quadrature point at t = 0 and t = time.t_end). Throws std::runtime_error naming the
+  /// boundary condition or the formula on inconsistent input.
   BiphasicProblem(const Mesh& mesh, const Config& config);
+
+  /// Body force b(X, t) per unit reference volume [N/mm³]: the momentum rows gain
+  /// −∫Ω₀ f·b dX, integrated with the element's quadrature rule. `rate` is ∂b/∂t, used by
+  /// time_derivative(); without it, a central difference in t with step 6e-6·max(1, |t|) s.
+  /// Replaces the body force of the configuration; an empty `b` removes it. Called
+  /// serially, at most once per residual time.
+  void set_body_force(VectorField b, VectorField rate = {});
+  /// Fluid source s(X, t) per unit reference volume [1/s]: the mass rows gain −∫Ω₀ g s dX
+  /// (mass balance J̇ + Div W = s). `rate` as for set_body_force.
+  void set_fluid_source(ScalarField s, ScalarField rate = {});
+  /// Dirichlet data from fields instead of value · curve(t): an unknown fixed by a
+  /// displacement condition takes its component of u(X, t) at its node, one fixed by a
+  /// pressure condition p(X, t) at its vertex; symmetry conditions stay 0. Rates (ẏ of
+  /// apply_dirichlet, ∂F/∂t) from `u_rate`, `p_rate`, or central differences as above. Empty
+  /// fields restore value · curve(t) for that kind.
+  void set_dirichlet_fields(VectorField u, ScalarField p, VectorField u_rate = {},
+                            ScalarField p_rate = {});
 
   const Mesh& mesh() const { return mesh_; }
   const SparsityPattern& pattern() const { return pattern_; }
@@ -49,7 +73,7 @@ class BiphasicProblem {
   /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].
   std::pair<double, double> field_norms(const double* F) const;
   /// ∂F/∂t at fixed (y, ẏ): the rates of the boundary values and loads (right derivatives of
-  /// the load curves at t).
+  /// the load curves at t), body force and fluid source included.
   void time_derivative(double t, double* dFdt) const;
   /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz).
   void jacobian(double t, const double* y, const double* ydot, double cj, double* values);
@@ -96,6 +120,16 @@ class BiphasicProblem {
     Index dof;
     double value;
     const LoadCurve* curve;  ///< null = constant
+    Index node;              ///< node (displacement) or vertex (pressure) of the unknown
+    int field;               ///< 0, 1, 2: displacement component; 3: pressure; −1: symmetry
+  };
+  struct VolumeLoads {
+    VectorField b, b_rate;
+    ScalarField s, s_rate;
+  };
+  struct DirichletFields {
+    VectorField u, u_rate;
+    ScalarField p, p_rate;
   };
   struct NodalLoad {
     std::vector<std::pair<Index, double>> entries;  ///< (row, amount) added to F
@@ -111,11 +145,27 @@ class BiphasicProblem {
   template <class Work>
   void for_each_element(bool with_jacobian, const double* y, const double* ydot, Work&& work);
   double curve_value(const LoadCurve* c, double t) const { return c ? c->value(t) : 1.0; }
+  double dirichlet_value(const Dirichlet& d, double t) const;
+  double dirichlet_rate(const Dirichlet& d, double t) const;
+  double dirichlet_scale(const Dirichlet& d) const {
+    return d.dof < num_u() ? row_scale_u_ : row_scale_p_;
+  }
+  /// Adds −∫Ω₀ f·b dX and −∫Ω₀ g s dX at time t (or their t-derivatives) to `out`.
+  void add_volume_loads(double t, bool rate, double* out) const;
+  /// Throws std::runtime_error if a formula of `config.loads` is not finite at a quadrature
+  /// point at time t.
+  void check_load_formulas(const Config& config, double t) const;
+  Vec3 point_position(Index e, std::size_t q) const;
 
   const Mesh& mesh_;
   std::map<std::string, LoadCurve> curves_;
   ElementParameters params_;
   std::vector<std::vector<PointGeometry>> geometry_;
+  std::vector<Eigen::Matrix<double, 10, 1>> point_p2_;  ///< P2 values at the rule's points
+  VolumeLoads loads_;
+  DirichletFields dirichlet_fields_;
+  std::vector<double> load_cache_;  ///< add_volume_loads at load_cache_t_ (empty = stale)
+  double load_cache_t_ = 0.0;
   std::vector<double> gls_c_;
   std::vector<double> flux_beta_;
   SparsityPattern pattern_;
@@ -124,7 +174,7 @@ class BiphasicProblem {
   std::vector<char> constrained_;
   /// Displacement rows fixed by each boundary's own displacement and symmetry conditions.
   std::map<std::string, std::vector<Index>> held_rows_;
-  std::vector<NodalLoad> loads_;
+  std::vector<NodalLoad> nodal_loads_;
   double row_scale_u_ = 1.0;  ///< Dirichlet row scale on displacement rows [N/mm]
   double row_scale_p_ = 1.0;  ///< Dirichlet row scale on pressure rows [mm³/(s MPa)]
   AssemblyStats stats_;
