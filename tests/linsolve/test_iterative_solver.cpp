@@ -8,11 +8,11 @@
 
 #include <random>
 
-#include "../common/box_mesh.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/paper_scene.hpp"
 #include "biphasic/time/backward_euler.hpp"
+#include "box_system.hpp"
 
 namespace biphasic {
 namespace {
@@ -20,13 +20,8 @@ namespace {
 class IterativeSolver : public ::testing::TestWithParam<Stabilisation> {};
 
 TEST_P(IterativeSolver, SolvesAssembledSystem) {
-  const Mesh mesh = test::box_mesh({3, 2, 2}, {1.5, 1.0, 1.0});
-  Config cfg;
-  cfg.stabilisation.type = GetParam();
-  cfg.bcs = {{BcType::Displacement, "z0", 2, 0.0, {}, ""},
-             {BcType::Symmetry, "x0", 0, 0.0, {}, ""},
-             {BcType::Symmetry, "y0", 0, 0.0, {}, ""},
-             {BcType::Pressure, "z1", 0, 0.0, {}, ""}};
+  const Mesh mesh = test::solver_box_mesh();
+  const Config cfg = test::solver_box_config(GetParam());
   BiphasicProblem problem(mesh, cfg);
   const Index n = problem.size();
   const double cj = 1.0 / 6.4;
