@@ -51,6 +51,7 @@ nlohmann::json measures_json(const LineMeasures& m) {
   nlohmann::json j{{"p_mid", m.p_mid}, {"p_max", m.p_max}, {"p_min", m.p_min}};
   j["overshoot"] = m.defined ? nlohmann::json(m.overshoot) : nlohmann::json(nullptr);
   j["undershoot"] = m.defined ? nlohmann::json(m.undershoot) : nlohmann::json(nullptr);
+  j["oscillation"] = m.defined ? nlohmann::json(m.oscillation) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -195,7 +196,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   std::unique_ptr<ReactionCsv> reaction_csv;
   if (!config.output.reactions.empty())
     reaction_csv = std::make_unique<ReactionCsv>(out_dir / "reactions.csv");
-  summary["line"] = {{"start", a}, {"end", b}, {"nodes", probe.size()}};
+  const DrainedEnds drained = drained_ends(probe, problem);
+  summary["line"] = {
+      {"start", a}, {"end", b}, {"nodes", probe.size()}, {"drained_ends", to_string(drained)}};
   summary["steps"] = nlohmann::json::array();
   summary["outputs"] = nlohmann::json::array();
 
@@ -208,7 +211,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     split(y);
     if (line_csv) line_csv->write(t, probe, u, p);
     if (fields) fields->write(t, u, p);
-    const LineMeasures m = line_measures(probe.s(), probe.pressure(p));
+    const LineMeasures m = line_measures(probe.s(), probe.pressure(p), drained);
     nlohmann::json o = measures_json(m);
     o["t"] = t;
     if (reaction_csv) {
@@ -290,9 +293,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     if (output_now) {
       const LineMeasures m = write_output(info.t, ys, ydots);
       rec["p_mid"] = m.p_mid;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f", m.p_mid,
-                    m.defined ? m.overshoot : 0.0);
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f", m.p_mid,
+                    m.defined ? m.overshoot : 0.0, m.defined ? m.oscillation : 0.0);
       mid = buf;
     }
     summary["steps"].push_back(rec);

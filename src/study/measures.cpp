@@ -1,13 +1,48 @@
 #include "biphasic/study/measures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "biphasic/io/line_probe.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 
 namespace biphasic {
 
-LineMeasures line_measures(const std::vector<double>& s, const std::vector<double>& p) {
+std::string to_string(DrainedEnds ends) {
+  switch (ends) {
+    case DrainedEnds::Start:
+      return "start";
+    case DrainedEnds::End:
+      return "end";
+    case DrainedEnds::Both:
+      return "both";
+    case DrainedEnds::None:
+      break;
+  }
+  return "none";
+}
+
+int allowed_turning_points(DrainedEnds ends) {
+  return ends == DrainedEnds::Start || ends == DrainedEnds::End ? 0 : 1;
+}
+
+double excess_variation(const std::vector<double>& p, int turning_points) {
+  if (turning_points != 0 && turning_points != 1)
+    throw std::invalid_argument("excess_variation: turning_points must be 0 or 1, not " +
+                                std::to_string(turning_points));
+  if (p.empty()) return 0.0;
+  double variation = 0.0;
+  for (std::size_t i = 1; i < p.size(); ++i) variation += std::abs(p[i] - p[i - 1]);
+  const double first = p.front(), last = p.back();
+  double needed = std::abs(last - first);
+  if (turning_points == 1)
+    for (double pk : p) needed = std::max(needed, std::abs(pk - first) + std::abs(last - pk));
+  return std::max(0.0, variation - needed);
+}
+
+LineMeasures line_measures(const std::vector<double>& s, const std::vector<double>& p,
+                           DrainedEnds drained) {
   if (s.size() != p.size() || s.size() < 2)
     throw std::invalid_argument("line_measures: need at least two (s, p) pairs of equal count");
   LineMeasures m;
@@ -19,8 +54,21 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
   if (m.defined) {
     m.overshoot = (m.p_max - m.p_mid) / m.p_mid;
     m.undershoot = -m.p_min / m.p_mid + 0.0;  // + 0.0: no "-0" when min p = 0
+    m.oscillation =
+        excess_variation(p, allowed_turning_points(drained)) / (2.0 * std::abs(m.p_mid));
   }
   return m;
+}
+
+DrainedEnds drained_ends(const LineProbe& probe, const BiphasicProblem& problem) {
+  auto drained = [&](std::size_t i) {
+    return probe.is_vertex(i) &&
+           problem.constrained()[static_cast<std::size_t>(problem.pattern().p_dof(probe.node(i)))];
+  };
+  const bool start = drained(0), end = drained(probe.size() - 1);
+  if (start && end) return DrainedEnds::Both;
+  if (start) return DrainedEnds::Start;
+  return end ? DrainedEnds::End : DrainedEnds::None;
 }
 
 }  // namespace biphasic
