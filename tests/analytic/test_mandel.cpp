@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "../common/peak.hpp"
 #include "biphasic/analytic/mandel.hpp"
-#include "peak.hpp"
 
 namespace biphasic::analytic {
 namespace {

@@ -16,11 +16,9 @@ analytic::ConfinedRamp ramp_of(const Config& config) {
   c.lambda = config.material.lambda;
   c.permeability = config.material.permeability;
   c.thickness = config.mesh.column.height;
-  for (const auto& bc : config.bcs) {
-    if (bc.type != BcType::Displacement || bc.boundary != "top") continue;
-    c.strain = -bc.value / c.thickness;
-    c.ramp_time = config.curves.at(bc.curve).points.at(1).first;
-  }
+  const PlatenRamp ramp = top_platen_ramp(config);
+  c.strain = -ramp.displacement / c.thickness;
+  c.ramp_time = ramp.ramp_time;
   return c;
 }
 
@@ -28,15 +26,13 @@ analytic::ConfinedRamp ramp_of(const Config& config) {
 
 ConfinedResult run_confined(const std::string& label, const std::vector<std::string>& overrides,
                             const ScratchDir& scratch) {
-  const std::string file = case_path("confined_compression", "confined_compression.toml");
-  const Config config = read_case_file(file, overrides);
+  const BenchmarkRun run = run_benchmark("confined_compression", overrides, scratch, label);
+  const Config& config = run.config;
   const analytic::ConfinedRamp ramp = ramp_of(config);
   const double area = config.mesh.column.width * config.mesh.column.depth;
-  const fs::path run_dir = scratch.path() / label;
-  const nlohmann::json summary = run_case_file(file, overrides, run_dir);
-  EXPECT_EQ(summary["status"], "completed");
-  const auto top = read_reactions(run_dir, "top");
-  const auto bottom = read_reactions(run_dir, "bottom");
+  const nlohmann::json& summary = run.summary;
+  const auto top = read_reactions(run.dir, "top");
+  const auto bottom = read_reactions(run.dir, "bottom");
 
   std::vector<double> times, computed;
   ConfinedResult result;

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +65,44 @@ inline nlohmann::json run_case_file(const std::string& case_file,
   return run_case(config, options);
 }
 
+/// One run of a verification case: its configuration (overrides applied), output folder and
+/// summary.
+struct BenchmarkRun {
+  Config config;
+  fs::path dir;
+  nlohmann::json summary;
+};
+
+/// Runs cases/verification/<benchmark>/<benchmark>.toml with `overrides` quietly into
+/// scratch/label and expects it to complete.
+inline BenchmarkRun run_benchmark(const std::string& benchmark,
+                                  const std::vector<std::string>& overrides,
+                                  const ScratchDir& scratch, const std::string& label) {
+  BenchmarkRun run;
+  run.config = read_case_file(case_path(benchmark, benchmark + ".toml"), overrides);
+  run.dir = scratch.path() / label;
+  RunOptions options;
+  options.output_dir = run.dir.string();
+  options.quiet = true;
+  run.summary = run_case(run.config, options);
+  EXPECT_EQ(run.summary["status"], "completed") << benchmark << ": " << label;
+  return run;
+}
+
+/// The platen ramp of a case: the z displacement prescribed on "top" [mm] and the time its
+/// load curve reaches its second point, the end of the ramp [s].
+struct PlatenRamp {
+  double displacement = 0.0;
+  double ramp_time = 0.0;
+};
+
+inline PlatenRamp top_platen_ramp(const Config& config) {
+  for (const auto& bc : config.bcs)
+    if (bc.type == BcType::Displacement && bc.boundary == "top" && bc.component == 2)
+      return {bc.value, config.curves.at(bc.curve).points.at(1).first};
+  throw std::runtime_error("no z displacement on \"top\" in " + config.case_file);
+}
+
 /// Rows of a CSV file with a header line, as numbers by column name; `text_columns` are kept
 /// as strings in `text`.
 struct CsvTable {
@@ -112,6 +152,46 @@ inline std::map<double, std::array<double, 3>> read_reactions(const fs::path& ru
     out[r.at("t")] = {r.at("Fx"), r.at("Fy"), r.at("Fz")};
   }
   return out;
+}
+
+/// The probe line of a run at one output time, nodes sorted by arc length s from line_start.
+struct LineSnapshot {
+  std::vector<double> s;                 ///< [mm]
+  std::vector<double> p;                 ///< [MPa]
+  std::vector<std::array<double, 3>> u;  ///< displacement [mm]
+};
+
+/// A run's line.csv by output time [s].
+inline std::map<double, LineSnapshot> read_line(const fs::path& run_dir) {
+  const CsvTable table = read_csv(run_dir / "line.csv");
+  std::map<double, std::vector<std::map<std::string, double>>> rows;
+  for (const auto& r : table.rows) rows[r.at("t")].push_back(r);
+  std::map<double, LineSnapshot> out;
+  for (auto& [t, samples] : rows) {
+    std::sort(samples.begin(), samples.end(),
+              [](const auto& a, const auto& b) { return a.at("s") < b.at("s"); });
+    LineSnapshot& snap = out[t];
+    for (const auto& r : samples) {
+      snap.s.push_back(r.at("s"));
+      snap.p.push_back(r.at("p"));
+      snap.u.push_back({r.at("ux"), r.at("uy"), r.at("uz")});
+    }
+  }
+  return out;
+}
+
+/// The output of `summary` at time t (to 1e-9 relative), or nullptr.
+inline const nlohmann::json* summary_output(const nlohmann::json& summary, double t) {
+  for (const auto& o : summary["outputs"])
+    if (std::abs(o["t"].get<double>() - t) <= 1e-9 * std::max(1.0, std::abs(t))) return &o;
+  return nullptr;
+}
+
+/// The output of a time series (map by time) at t, to 1e-9 relative, or end().
+template <class Map>
+typename Map::const_iterator find_time(const Map& series, double t) {
+  const auto it = series.lower_bound(t - 1e-9 * std::abs(t));
+  return it != series.end() && std::abs(it->first - t) <= 1e-9 * std::abs(t) ? it : series.end();
 }
 
 /// $BIPHASIC_VERIFICATION_OUT/<benchmark>/ (created), or nothing when the variable is unset.

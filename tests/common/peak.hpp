@@ -1,4 +1,5 @@
-// Golden-section search for the maximum of a unimodal function, shared by the analytic tests.
+// Golden-section search for the maximum of a unimodal function, shared by the analytic and
+// verification tests.
 #pragma once
 
 #include <cmath>
