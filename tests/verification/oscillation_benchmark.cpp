@@ -5,7 +5,9 @@
 #include <limits>
 #include <memory>
 
+#include "biphasic/io/line_probe.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/study/measures.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic::verification {
@@ -47,6 +49,11 @@ FirstStepOvershoot first_step(const Mesh& mesh, Config config, double r) {
   }
   for (const auto& [k, sum] : levels)
     out.level_mean = std::max(out.level_mean, (sum.first / sum.second - q) / q);
+
+  const LineProbe edge(mesh, {0.0, 0.0, 0.0}, {0.0, 0.0, config.mesh.column.height}, 1e-9);
+  const std::vector<double> p_vertices(y.begin() + problem.num_u(), y.end());
+  out.line_oscillation =
+      line_measures(edge.s(), edge.pressure(p_vertices), drained_ends(edge, problem)).oscillation;
   return out;
 }
 
@@ -86,10 +93,12 @@ OscillationSweep sweep_first_step(int nz) {
 
   if (const auto out = verification_output("oscillation")) {
     const std::string suffix = "_nz" + std::to_string(nz) + ".csv";
-    CsvWriter csv(*out / ("overshoot" + suffix), "r,stabilisation,overshoot,level_mean_overshoot");
+    CsvWriter csv(*out / ("overshoot" + suffix),
+                  "r,stabilisation,overshoot,level_mean_overshoot,line_oscillation");
     for (const auto& [name, values] : sweep.overshoot)
       for (std::size_t i = 0; i < kSweep.size(); ++i)
-        csv.row(kSweep[i], name, values[i].vertices, values[i].level_mean);
+        csv.row(kSweep[i], name, values[i].vertices, values[i].level_mean,
+                values[i].line_oscillation);
     CsvWriter thresholds(*out / ("thresholds" + suffix),
                          "stabilisation,r_vanishes,r_vanishes_level_mean");
     for (const auto& [name, r] : sweep.threshold)

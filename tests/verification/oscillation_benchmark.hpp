@@ -15,6 +15,9 @@ namespace biphasic::verification {
 struct FirstStepOvershoot {
   double vertices = 0.0;    ///< max over every vertex of the column
   double level_mean = 0.0;  ///< max over the layers' mean vertex pressure (the 1D-like part)
+  /// The oscillation measure of the line measures (biphasic/study/measures.hpp) along the edge
+  /// x = y = 0 from the bottom to the drained top: non-monotonicity over p_mid [-].
+  double line_oscillation = 0.0;
 };
 
 struct OscillationSweep {
@@ -30,8 +33,8 @@ struct OscillationSweep {
 
 /// Runs the first step for each r and stabilisation on nz layers of cubic cells (h = H/nz).
 /// When $BIPHASIC_VERIFICATION_OUT is set, writes oscillation/overshoot_nz<nz>.csv
-/// (r, stabilisation, overshoot, level_mean_overshoot) and oscillation/thresholds_nz<nz>.csv
-/// (stabilisation, r_vanishes, r_vanishes_level_mean).
+/// (r, stabilisation, overshoot, level_mean_overshoot, line_oscillation) and
+/// oscillation/thresholds_nz<nz>.csv (stabilisation, r_vanishes, r_vanishes_level_mean).
 OscillationSweep sweep_first_step(int nz);
 
 }  // namespace biphasic::verification

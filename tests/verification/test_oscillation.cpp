@@ -61,13 +61,31 @@ TEST(Oscillation, FirstStepOvershootAgainstR) {
     EXPECT_LT(sweep.threshold.at(s), sweep.threshold.at("none")) << s;
   }
 
+  // The oscillation measure of the line measures (non-monotonicity along the probe edge, which
+  // is drained at the top) flags the overshoot: at least 0.9 of it wherever it exceeds 0.01
+  // (equal to it from r = 0.05 on, larger below, where the edge ripples further), and 0 where
+  // the overshoot has vanished.
+  for (const auto& [name, values] : sweep.overshoot)
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      if (values[i].vertices > 0.01) {
+        EXPECT_GT(values[i].line_oscillation, 0.9 * values[i].vertices)
+            << name << ", r = " << rs[i];
+      }
+      if (rs[i] >= 0.6) {
+        EXPECT_LT(values[i].line_oscillation, 1e-6) << name << ", r = " << rs[i];
+      }
+    }
+  EXPECT_GT(none.front().line_oscillation, 0.7);
+
   std::cout << std::setprecision(4)
             << "[ overshoot ] r: none / gls / flux [none, layer mean] (1D P2/P1)\n";
   for (std::size_t i = 0; i < rs.size(); ++i) {
     std::cout << "  " << rs[i] << ": " << none[i].vertices << " / "
               << sweep.overshoot.at("gls")[i].vertices << " / "
               << sweep.overshoot.at("flux_perturbation")[i].vertices << " [" << none[i].level_mean
-              << "]";
+              << "] oscillation " << none[i].line_oscillation << " / "
+              << sweep.overshoot.at("gls")[i].line_oscillation << " / "
+              << sweep.overshoot.at("flux_perturbation")[i].line_oscillation;
     const auto one_d = kOneDimensional.find(rs[i]);
     if (one_d != kOneDimensional.end()) std::cout << "  (" << one_d->second << ")";
     std::cout << "\n";

@@ -34,13 +34,14 @@ std::vector<std::string> backward_euler(int nz, double dt) {
 
 // One backward-Euler step of Δt = 0.1 s (T = 1e-4, r = c Δt/h² = 0.01) from rest: the body
 // answers undrained, p = q, with hardly any settlement; near the drained face the unstabilised
-// P2/P1 pressure oscillates (the overshoot of test_oscillation at r = 0.01).
+// P2/P1 pressure oscillates (the overshoot of test_oscillation at r = 0.01), and the oscillation
+// measure of the summary flags it.
 TEST(Terzaghi, FirstBackwardEulerStepIsUndrained) {
   ScratchDir scratch("terzaghi_first_step");
   auto o = terzaghi_column(10);
   o.insert(o.end(), {"time.dt=0.1", "time.t_end=0.1"});
   const fs::path dir = scratch.path() / "run";
-  run_case_file(case_path("terzaghi", "terzaghi.toml"), o, dir);
+  const nlohmann::json summary = run_case_file(case_path("terzaghi", "terzaghi.toml"), o, dir);
   const CsvTable line = read_csv(dir / "line.csv");
   const double q = 1e-4, H = 1.0;
   double overshoot = 0.0, settlement = 0.0;
@@ -62,6 +63,9 @@ TEST(Terzaghi, FirstBackwardEulerStepIsUndrained) {
   EXPECT_LT(settlement, 0.05);
   // The known first-step oscillation near the drained face (unstabilised, r far below 1/6).
   EXPECT_GT(overshoot, 0.2);
+  // The summary's oscillation measure (the probe edge is drained at its end, the top) flags it.
+  EXPECT_EQ(summary["line"]["drained_ends"], "end");
+  EXPECT_GT(summary["outputs"].back()["oscillation"].get<double>(), 0.2);
   std::cout << "[ first step ] r = 0.01: U = " << settlement << ", overshoot on the probe line "
             << overshoot << "\n";
   if (const auto out = verification_output("terzaghi")) {

@@ -42,6 +42,9 @@ def main():
         if name == "none":
             ax.plot(r_values, [max(floor, r["level_mean_overshoot"]) for r in sel], ":",
                     color="C3", label="none: layers' mean pressure")
+            if "line_oscillation" in sel[0]:
+                ax.plot(r_values, [max(floor, r["line_oscillation"]) for r in sel], "-.",
+                        color="C1", label="none: oscillation measure on the probe edge")
     ax.plot(list(ONE_D), list(ONE_D.values()), "kx", ms=8, label="1D P2/P1 (notes)")
     ax.axvline(1 / 6, color="k", lw=0.8, ls=":", label="1D threshold r = 1/6")
     ax.axhline(1e-3, color="gray", lw=0.8, ls="--")
@@ -56,9 +59,11 @@ def main():
     save(fig, fig_dir, "oscillation")
 
     by = {(r["r"], r["stabilisation"]): r for r in rows}
-    print(f"  {files[0].name}: | r | none | none, layer mean | GLS | flux perturbation | 1D |")
+    print(f"  {files[0].name}: | r | none | none, layer mean | none, edge oscillation | GLS "
+          "| flux perturbation | 1D |")
     for r in sorted({k[0] for k in by}):
         cells = [by[(r, "none")]["overshoot"], by[(r, "none")]["level_mean_overshoot"],
+                 by[(r, "none")].get("line_oscillation", float("nan")),
                  by[(r, "gls")]["overshoot"], by[(r, "flux_perturbation")]["overshoot"]]
         print(f"  | {r:.4g} | " + " | ".join(f"{c:.3g}" for c in cells) +
               f" | {ONE_D.get(round(r, 6), '')} |")
