@@ -2,6 +2,9 @@
 // fixed axially, two symmetry planes, drained top.
 #pragma once
 
+#include <random>
+#include <vector>
+
 #include "../common/box_mesh.hpp"
 #include "biphasic/io/config.hpp"
 
@@ -17,6 +20,15 @@ inline Config solver_box_config(Stabilisation stabilisation) {
              {BcType::Symmetry, "y0", 0, 0.0, {}, ""},
              {BcType::Pressure, "z1", 0, 0.0, {}, ""}};
   return cfg;
+}
+
+/// A reproducible solution vector, entries uniform in [−1, 1].
+inline std::vector<double> random_unknowns(Index n) {
+  std::mt19937 gen(1);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  std::vector<double> v(n);
+  for (double& x : v) x = d(gen);
+  return v;
 }
 
 }  // namespace biphasic::test

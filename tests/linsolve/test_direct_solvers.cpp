@@ -6,7 +6,6 @@
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-#include <random>
 
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
@@ -39,10 +38,7 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
   LinearSolverStats stats;
   LinearSolverPtr ls = make_linear_solver({GetParam().first, GetParam().second, {}}, ctx, &stats);
   N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx), r = N_VNew_Serial(n, ctx);
-  std::mt19937 gen(1);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  std::vector<double> exact(n);
-  for (auto& v : exact) v = d(gen);
+  std::vector<double> exact = test::random_unknowns(n);
   N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
   ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
   for (int round = 0; round < 2; ++round) {

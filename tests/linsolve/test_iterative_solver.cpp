@@ -6,7 +6,6 @@
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-#include <random>
 
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
@@ -40,24 +39,24 @@ TEST_P(IterativeSolver, SolvesAssembledSystem) {
   });
   LinearSolverPtr ls = make_linear_solver(config, ctx, &stats, {}, &saddle);
   N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx);
-  std::mt19937 gen(1);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  std::vector<double> exact(n);
-  for (auto& v : exact) v = d(gen);
+  std::vector<double> exact = test::random_unknowns(n);
   N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
   ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
-  double scale_u = 0.0, scale_p = 0.0;
-  for (Index i = 0; i < n; ++i)
-    (i < problem.num_u() ? scale_u : scale_p) =
-        std::max(i < problem.num_u() ? scale_u : scale_p, std::abs(exact[i]));
+  // max |v_i| over the displacement (u) or pressure (p) unknowns
+  auto field_max = [&](bool u, auto&& v) {
+    double m = 0.0;
+    for (Index i = u ? 0 : problem.num_u(); i < (u ? problem.num_u() : n); ++i)
+      m = std::max(m, std::abs(v(i)));
+    return m;
+  };
+  auto exact_at = [&](Index i) { return exact[i]; };
+  const double scale_u = field_max(true, exact_at), scale_p = field_max(false, exact_at);
   for (int round = 0; round < 2; ++round) {
     ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
     ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
     ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
-    double err_u = 0.0, err_p = 0.0;
-    for (Index i = 0; i < n; ++i)
-      (i < problem.num_u() ? err_u : err_p) =
-          std::max(i < problem.num_u() ? err_u : err_p, std::abs(NV_Ith_S(x, i) - exact[i]));
+    auto error_at = [&](Index i) { return NV_Ith_S(x, i) - exact[i]; };
+    const double err_u = field_max(true, error_at), err_p = field_max(false, error_at);
     EXPECT_LT(err_u, 1e-6 * scale_u) << "round " << round;
     EXPECT_LT(err_p, 1e-6 * scale_p) << "round " << round;
   }
