@@ -242,6 +242,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"krylov_iterations", ls.krylov_iterations},
                            {"max_krylov_iterations", ls.max_krylov_iterations},
                            {"amg_cycles", ls.amg_cycles},
+                           {"refinement_steps", ls.refinement_steps},
+                           {"precision_fallbacks", ls.precision_fallbacks},
                            {"fill_ratio", ls.fill}};
     if (config.time.integrator == Integrator::Bdf) {
       summary["counters"]["error_test_failures"] = is.error_test_failures;

@@ -1,7 +1,12 @@
 // MUMPS (sequential build, multifrontal LU with BLAS-3 kernels) as a SUNLinearSolver:
-// analysis once per pattern, a numeric factorisation at each setup.
+// analysis once per pattern, a numeric factorisation at each setup; factors in double
+// precision, or in single precision with each solve refined in double precision.
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -16,15 +21,32 @@ using detail::seconds_since;
 
 constexpr MUMPS_INT kUseCommWorld = -987654;
 
-class MumpsSolver final : public detail::DirectSolver {
+/// MUMPS' C interface in double (d) and single (s) precision.
+struct DoublePrecision {
+  using Struc = DMUMPS_STRUC_C;
+  using Real = double;
+  static void call(Struc* id) { dmumps_c(id); }
+};
+struct SinglePrecision {
+  using Struc = SMUMPS_STRUC_C;
+  using Real = float;
+  static void call(Struc* id) { smumps_c(id); }
+};
+
+/// One MUMPS instance: analysis on the first factorisation, then numeric factorisations and
+/// solves in the precision P (a single-precision instance keeps its own copy of the values).
+template <class P>
+class MumpsInstance {
  public:
-  MumpsSolver(Ordering ordering, LinearSolverStats* stats, const FillOrder& order)
-      : DirectSolver(stats) {
+  using Real = typename P::Real;
+  static constexpr bool kDouble = std::is_same_v<Real, double>;
+
+  MumpsInstance(Ordering ordering, const FillOrder& order) {
     id_.comm_fortran = kUseCommWorld;
     id_.par = 1;  // the host works
     id_.sym = 0;  // unsymmetric
     id_.job = -1;
-    dmumps_c(&id_);
+    P::call(&id_);
     icntl(1) = -1;  // no messages
     icntl(2) = -1;
     icntl(3) = -1;
@@ -50,12 +72,15 @@ class MumpsSolver final : public detail::DirectSolver {
     }
     icntl(14) = 40;  // working-space relaxation [%]
   }
-  ~MumpsSolver() override {
+  ~MumpsInstance() {
     id_.job = -2;  // release MUMPS' memory
-    dmumps_c(&id_);
+    P::call(&id_);
   }
+  MumpsInstance(const MumpsInstance&) = delete;
+  MumpsInstance& operator=(const MumpsInstance&) = delete;
 
-  int setup(SUNMatrix A) override {
+  /// Numeric factorisation of A (analysis first if not yet done); false if MUMPS fails.
+  bool factorise(SUNMatrix A, LinearSolverStats& stats) {
     if (!analysed_) {
       const auto n = SUNSparseMatrix_Columns(A);
       const sunindextype* Ap = SUNSparseMatrix_IndexPointers(A);
@@ -71,54 +96,161 @@ class MumpsSolver final : public detail::DirectSolver {
       id_.nnz = static_cast<MUMPS_INT8>(Ap[n]);
       id_.irn = irn_.data();
       id_.jcn = jcn_.data();
-      id_.a = SUNSparseMatrix_Data(A);
+      set_values(A);
       const auto t0 = Clock::now();
       id_.job = 1;
-      dmumps_c(&id_);
-      stats().analysis_seconds += seconds_since(t0);
-      ++stats().analyses;
-      if (infog(1) < 0) return SUNLS_PACKAGE_FAIL_UNREC;
+      P::call(&id_);
+      stats.analysis_seconds += seconds_since(t0);
+      ++stats.analyses;
+      if (infog(1) < 0) return false;
       analysed_ = true;
     }
-    id_.a = SUNSparseMatrix_Data(A);  // values in CSC order, matching irn/jcn
     const auto t0 = Clock::now();
+    set_values(A);  // values in CSC order, matching irn/jcn
     id_.job = 2;
-    dmumps_c(&id_);
-    stats().factor_seconds += seconds_since(t0);
-    ++stats().factorizations;
-    if (infog(1) < 0) return SUNLS_LUFACT_FAIL;
+    P::call(&id_);
+    stats.factor_seconds += seconds_since(t0);
+    ++stats.factorizations;
+    if (infog(1) < 0) return false;
     // INFOG(29): entries in the factors (negative: millions).
     const double entries = infog(29) >= 0 ? infog(29) : -1e6 * infog(29);
-    stats().fill = entries / static_cast<double>(id_.nnz);
-    return SUNLS_SUCCESS;
+    stats.fill = entries / static_cast<double>(id_.nnz);
+    return true;
   }
 
-  int solve(SUNMatrix, N_Vector x, N_Vector b) override {
-    N_VScale(1.0, b, x);  // MUMPS overwrites the right-hand side with the solution
-    id_.rhs = N_VGetArrayPointer(x);
+  /// x = A⁻¹ b with the factors (x and b may alias); false if MUMPS fails.
+  bool solve(const double* b, double* x) {
+    const auto n = static_cast<std::size_t>(id_.n);
     id_.nrhs = 1;
     id_.lrhs = id_.n;
     id_.job = 3;
-    dmumps_c(&id_);
-    return infog(1) >= 0 ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;
+    if constexpr (kDouble) {
+      std::copy_n(b, n, x);  // MUMPS overwrites the right-hand side with the solution
+      id_.rhs = x;
+      P::call(&id_);
+    } else {
+      rhs_.assign(b, b + n);
+      id_.rhs = rhs_.data();
+      P::call(&id_);
+      std::copy(rhs_.begin(), rhs_.end(), x);
+    }
+    return infog(1) >= 0;
   }
 
  private:
+  void set_values(SUNMatrix A) {
+    double* a = SUNSparseMatrix_Data(A);
+    if constexpr (kDouble) {
+      id_.a = a;
+    } else {
+      values_.assign(a, a + id_.nnz);
+      id_.a = values_.data();
+    }
+  }
+
   /// ICNTL(i) and INFOG(i) in MUMPS' 1-based numbering.
   MUMPS_INT& icntl(int i) { return id_.icntl[i - 1]; }
   MUMPS_INT infog(int i) const { return id_.infog[i - 1]; }
 
-  DMUMPS_STRUC_C id_{};
+  typename P::Struc id_{};
   bool analysed_ = false;
   std::vector<MUMPS_INT> irn_, jcn_;  ///< 1-based coordinates in CSC value order
   std::vector<MUMPS_INT> perm_in_;    ///< position of each unknown in the caller's order
+  std::vector<Real> values_, rhs_;    ///< single precision: the matrix and right-hand side
+};
+
+/// Componentwise backward error of x as a solution of A x = b (Oettli–Prager):
+/// max_i |r_i| / (|A| |x| + |b|)_i with r = b − A x, which it stores.
+double backward_error(SUNMatrix A, const double* b, const double* x, std::vector<double>& r,
+                      std::vector<double>& scale) {
+  const sunindextype n = SUNSparseMatrix_Columns(A);
+  const sunindextype* Ap = SUNSparseMatrix_IndexPointers(A);
+  const sunindextype* Ai = SUNSparseMatrix_IndexValues(A);
+  const double* a = SUNSparseMatrix_Data(A);
+  r.assign(b, b + n);
+  scale.resize(static_cast<std::size_t>(n));
+  for (sunindextype i = 0; i < n; ++i) scale[i] = std::abs(b[i]);
+  for (sunindextype j = 0; j < n; ++j)
+    for (sunindextype q = Ap[j]; q < Ap[j + 1]; ++q) {
+      const double t = a[q] * x[j];
+      r[Ai[q]] -= t;
+      scale[Ai[q]] += std::abs(t);
+    }
+  double omega = 0.0;
+  for (sunindextype i = 0; i < n; ++i)
+    if (scale[i] > 0.0) omega = std::max(omega, std::abs(r[i]) / scale[i]);
+  return omega;
+}
+
+/// MUMPS as a SUNLinearSolver, in double or mixed precision. Mixed: single-precision factors;
+/// each solution is refined in double precision (x ← x + LU⁻¹(b − A x)) until its
+/// componentwise backward error is at most kTargetBackwardError. A single-precision
+/// factorisation that fails, or a refinement that stalls, switches the solver to double
+/// precision for the rest of the run (counted in the stats).
+class MumpsSolver final : public detail::DirectSolver {
+ public:
+  static constexpr double kTargetBackwardError = 1e-6;
+  static constexpr int kMaxRefinementSteps = 10;
+
+  MumpsSolver(Ordering ordering, FactorPrecision precision, LinearSolverStats* stats,
+              FillOrder order)
+      : DirectSolver(stats), ordering_(ordering), order_(std::move(order)) {
+    if (precision == FactorPrecision::Mixed)
+      single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_);
+    else
+      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
+  }
+
+  int setup(SUNMatrix A) override {
+    if (single_) {
+      if (single_->factorise(A, stats())) return SUNLS_SUCCESS;
+      fall_back_to_double();
+    }
+    return double_->factorise(A, stats()) ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
+  }
+
+  int solve(SUNMatrix A, N_Vector x, N_Vector b) override {
+    const auto n = static_cast<std::size_t>(SUNSparseMatrix_Columns(A));
+    double* xv = N_VGetArrayPointer(x);
+    if (!single_)
+      return double_->solve(N_VGetArrayPointer(b), xv) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;
+    b_.assign(N_VGetArrayPointer(b), N_VGetArrayPointer(b) + n);  // x and b may alias
+    if (!single_->solve(b_.data(), xv)) return SUNLS_PACKAGE_FAIL_UNREC;
+    double omega = backward_error(A, b_.data(), xv, r_, scale_);
+    for (int k = 0; k < kMaxRefinementSteps && omega > kTargetBackwardError; ++k) {
+      if (!single_->solve(r_.data(), r_.data())) return SUNLS_PACKAGE_FAIL_UNREC;
+      for (std::size_t i = 0; i < n; ++i) xv[i] += r_[i];
+      ++stats().refinement_steps;
+      const double previous = omega;
+      omega = backward_error(A, b_.data(), xv, r_, scale_);
+      if (omega > 0.5 * previous) break;  // stalled: single precision is not enough here
+    }
+    if (omega <= kTargetBackwardError) return SUNLS_SUCCESS;
+    fall_back_to_double();
+    if (!double_->factorise(A, stats())) return SUNLS_PACKAGE_FAIL_UNREC;
+    return double_->solve(b_.data(), xv) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;
+  }
+
+ private:
+  void fall_back_to_double() {
+    single_.reset();
+    double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
+    ++stats().precision_fallbacks;
+  }
+
+  Ordering ordering_;
+  FillOrder order_;
+  std::unique_ptr<MumpsInstance<SinglePrecision>> single_;
+  std::unique_ptr<MumpsInstance<DoublePrecision>> double_;
+  std::vector<double> b_, r_, scale_;  ///< refinement work vectors
 };
 
 }  // namespace
 
-LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
-                                  FillOrder order) {
-  return detail::wrap_direct_solver(std::make_unique<MumpsSolver>(ordering, stats, order), ctx);
+LinearSolverPtr make_mumps_solver(Ordering ordering, FactorPrecision precision, SUNContext ctx,
+                                  LinearSolverStats* stats, FillOrder order) {
+  return detail::wrap_direct_solver(
+      std::make_unique<MumpsSolver>(ordering, precision, stats, std::move(order)), ctx);
 }
 
 }  // namespace biphasic

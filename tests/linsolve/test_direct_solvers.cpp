@@ -1,11 +1,11 @@
 // Each sparse direct solver behind the SUNLinearSolver interface solves the assembled P2/P1
-// system to round-off with each ordering and reuses its analysis across setups; backward
-// Euler gives the same answer whichever solver is chosen.
+// system to round-off with each ordering (MUMPS also with single-precision factors and
+// refinement) and reuses its analysis across setups; backward Euler gives the same answer
+// whichever solver is chosen.
 #include <gtest/gtest.h>
 
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
-
 
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
@@ -16,12 +16,43 @@
 namespace biphasic {
 namespace {
 
-using SolverChoice = std::pair<LinearSolverType, Ordering>;
+struct SolverChoice {
+  LinearSolverType type;
+  Ordering ordering;
+  FactorPrecision precision = FactorPrecision::Double;
+
+  LinearSolverConfig config() const {
+    LinearSolverConfig c;
+    c.type = type;
+    c.ordering = ordering;
+    c.precision = precision;
+    return c;
+  }
+};
 class DirectSolver : public ::testing::TestWithParam<SolverChoice> {};
 
 std::string choice_name(const SolverChoice& c) {
   const char* type[] = {"klu", "umfpack", "mumps"};
-  return std::string(type[static_cast<int>(c.first)]) + "_" + to_string(c.second);
+  std::string name = std::string(type[static_cast<int>(c.type)]) + "_" + to_string(c.ordering);
+  if (c.type == LinearSolverType::Mumps) name += "_" + to_string(c.precision);
+  return name;
+}
+
+/// max_i |b − A x|_i / (|A| |x| + |b|)_i.
+double componentwise_backward_error(SUNMatrix A, N_Vector x, N_Vector b) {
+  const sunindextype n = SUNSparseMatrix_Columns(A);
+  std::vector<double> r(N_VGetArrayPointer(b), N_VGetArrayPointer(b) + n), s(n);
+  for (sunindextype i = 0; i < n; ++i) s[i] = std::abs(r[i]);
+  for (sunindextype j = 0; j < n; ++j)
+    for (sunindextype q = SUNSparseMatrix_IndexPointers(A)[j];
+         q < SUNSparseMatrix_IndexPointers(A)[j + 1]; ++q) {
+      const double t = SUNSparseMatrix_Data(A)[q] * NV_Ith_S(x, j);
+      r[SUNSparseMatrix_IndexValues(A)[q]] -= t;
+      s[SUNSparseMatrix_IndexValues(A)[q]] += std::abs(t);
+    }
+  double omega = 0.0;
+  for (sunindextype i = 0; i < n; ++i) omega = std::max(omega, std::abs(r[i]) / s[i]);
+  return omega;
 }
 
 TEST_P(DirectSolver, SolvesAssembledSystem) {
@@ -36,7 +67,7 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
   problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
 
   LinearSolverStats stats;
-  LinearSolverPtr ls = make_linear_solver({GetParam().first, GetParam().second, {}}, ctx, &stats);
+  LinearSolverPtr ls = make_linear_solver(GetParam().config(), ctx, &stats);
   N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx), r = N_VNew_Serial(n, ctx);
   std::vector<double> exact = test::random_unknowns(n);
   N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
@@ -47,11 +78,19 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
     ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
     double err = 0.0;
     for (Index i = 0; i < n; ++i) err = std::max(err, std::abs(NV_Ith_S(x, i) - exact[i]));
-    EXPECT_LT(err, 1e-8) << "round " << round;
+    if (GetParam().precision == FactorPrecision::Double) {
+      EXPECT_LT(err, 1e-8) << "round " << round;
+    } else {
+      // Refined to a componentwise backward error of 1e-6; the forward error is at most the
+      // condition number times that.
+      EXPECT_LE(componentwise_backward_error(A, x, b), 1e-6) << "round " << round;
+      EXPECT_LT(err, 1e-4) << "round " << round;
+    }
   }
   EXPECT_EQ(stats.analyses, 1);
   EXPECT_EQ(stats.factorizations, 2);
-  if (GetParam().first == LinearSolverType::Klu) {
+  EXPECT_EQ(stats.precision_fallbacks, 0);
+  if (GetParam().type == LinearSolverType::Klu) {
     EXPECT_EQ(stats.refactorizations, 1);
   }
   EXPECT_GT(stats.fill, 1.0);
@@ -62,13 +101,59 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
 }
 
 const SolverChoice kChoices[] = {
-    {LinearSolverType::Klu, Ordering::Amd},       {LinearSolverType::Klu, Ordering::Colamd},
-    {LinearSolverType::Klu, Ordering::Metis},     {LinearSolverType::Umfpack, Ordering::Amd},
-    {LinearSolverType::Umfpack, Ordering::Metis}, {LinearSolverType::Mumps, Ordering::Amd},
-    {LinearSolverType::Mumps, Ordering::Metis}};
+    {LinearSolverType::Klu, Ordering::Amd},
+    {LinearSolverType::Klu, Ordering::Colamd},
+    {LinearSolverType::Klu, Ordering::Metis},
+    {LinearSolverType::Umfpack, Ordering::Amd},
+    {LinearSolverType::Umfpack, Ordering::Metis},
+    {LinearSolverType::Mumps, Ordering::Amd},
+    {LinearSolverType::Mumps, Ordering::Metis},
+    {LinearSolverType::Mumps, Ordering::Amd, FactorPrecision::Mixed},
+    {LinearSolverType::Mumps, Ordering::Metis, FactorPrecision::Mixed}};
 
 INSTANTIATE_TEST_SUITE_P(All, DirectSolver, ::testing::ValuesIn(kChoices),
                          [](const auto& param_info) { return choice_name(param_info.param); });
+
+// Pressure rows scaled by 1e-50 vanish in single precision: the mixed-precision MUMPS solver
+// finds its single-precision factorisation singular, falls back to double-precision factors
+// once, and still solves the system to round-off.
+TEST(MumpsMixedPrecision, FallsBackToDoubleWhenSinglePrecisionFails) {
+  const Mesh mesh = test::solver_box_mesh();
+  const Config cfg = test::solver_box_config(Stabilisation::Gls);
+  BiphasicProblem problem(mesh, cfg);
+  const Index n = problem.size();
+  std::vector<double> y(n, 0.0), ydot(n, 0.0);
+  SUNContext ctx;
+  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
+  SUNMatrix A = problem.pattern().new_matrix(ctx);
+  problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
+  const sunindextype* Ap = SUNSparseMatrix_IndexPointers(A);
+  const sunindextype* Ai = SUNSparseMatrix_IndexValues(A);
+  double* a = SUNSparseMatrix_Data(A);
+  for (sunindextype j = 0; j < n; ++j)
+    for (sunindextype q = Ap[j]; q < Ap[j + 1]; ++q)
+      if (Ai[q] >= problem.num_u()) a[q] *= 1e-50;
+
+  LinearSolverStats stats;
+  LinearSolverPtr ls = make_linear_solver(
+      SolverChoice{LinearSolverType::Mumps, Ordering::Metis, FactorPrecision::Mixed}.config(), ctx,
+      &stats);
+  N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx);
+  std::vector<double> exact = test::random_unknowns(n);
+  N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
+  ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
+  ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+  ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
+  ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
+  double err = 0.0;
+  for (Index i = 0; i < n; ++i) err = std::max(err, std::abs(NV_Ith_S(x, i) - exact[i]));
+  EXPECT_LT(err, 1e-8);
+  EXPECT_EQ(stats.precision_fallbacks, 1);
+  for (N_Vector v : {x, b, xe}) N_VDestroy(v);
+  SUNMatDestroy(A);
+  ls.reset();
+  SUNContext_Free(&ctx);
+}
 
 // The reference loading (k = 1e-3, GLS, 5 steps) on a coarse quarter cylinder: the pressure
 // field at t = 32 s agrees to 1e-8 (relative to its maximum) for every solver.
@@ -77,7 +162,7 @@ TEST(DirectSolvers, SameAnswerWhicheverSolver) {
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   std::vector<double> reference;
   for (const SolverChoice& choice : kChoices) {
-    cfg.linear_solver = {choice.first, choice.second, {}};
+    cfg.linear_solver = choice.config();
     BiphasicProblem problem(mesh, cfg);
     BackwardEuler integrator(problem, cfg.time, cfg.linear_solver);
     std::vector<double> y(problem.size(), 0.0);

@@ -107,7 +107,7 @@ TEST(IterativeSolverRun, SameAnswerAsDirectSolver) {
     Config cfg = paper_reference_config(3.0, k, stabilisation == Stabilisation::Gls);
     cfg.stabilisation.type = stabilisation;
     const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
-    cfg.linear_solver = {LinearSolverType::Mumps, Ordering::Metis, {}};
+    cfg.linear_solver = LinearSolverConfig{};  // MUMPS, METIS
     const std::vector<double> direct = final_pressure(mesh, cfg);
     cfg.linear_solver.type = LinearSolverType::Iterative;
     const std::vector<double> iterative = final_pressure(mesh, cfg);

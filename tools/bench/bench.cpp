@@ -3,7 +3,8 @@
 // refactorisation and solve. Each (mesh, solver) pair runs in its own child process so that
 // its peak memory (ru_maxrss) is its own. Prints a Markdown table; --csv FILE also writes CSV.
 //
-// usage: biphasic_bench [--lc 1.3,0.98,...] [--solvers klu,umfpack,mumps] [--repeat N] [--csv FILE]
+// usage: biphasic_bench [--lc 1.3,0.98,...] [--solvers klu,umfpack,mumps,mumps_double,iterative]
+// [--repeat N] [--csv FILE]
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <sys/resource.h>
@@ -59,7 +60,10 @@ std::string measure(double lc, const std::string& solver_name, int repeat) {
                                   : solver_name == "iterative" ? LinearSolverType::Iterative
                                                                : LinearSolverType::Mumps;
   Config cfg = paper_reference_config(lc);
-  cfg.linear_solver = {solver, Ordering::Metis, {}};
+  cfg.linear_solver.type = solver;
+  cfg.linear_solver.ordering = Ordering::Metis;
+  cfg.linear_solver.precision =
+      solver_name == "mumps_double" ? FactorPrecision::Double : FactorPrecision::Mixed;
   const Mesh mesh = generate_quarter_cylinder(cfg.mesh.cylinder);
   BiphasicProblem problem(mesh, cfg);
   const Index n = problem.size();
@@ -143,7 +147,8 @@ int main(int argc, char** argv) {
     else if (a == "--csv")
       csv_path = next();
     else {
-      std::cerr << "usage: biphasic_bench [--lc 1.3,0.98] [--solvers klu,umfpack,mumps,iterative] "
+      std::cerr << "usage: biphasic_bench [--lc 1.3,0.98] [--solvers "
+                   "klu,umfpack,mumps,mumps_double,iterative] "
                    "[--repeat N] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }

@@ -28,6 +28,8 @@ struct LinearSolverStats {
   long krylov_iterations = 0;      ///< iterative solver: FGMRES iterations over all solves
   long max_krylov_iterations = 0;  ///< iterative solver: most FGMRES iterations of one solve
   long amg_cycles = 0;             ///< iterative solver: AMG V-cycles on the displacement block
+  long refinement_steps = 0;       ///< mixed precision: refinement steps over all solves
+  long precision_fallbacks = 0;    ///< mixed precision: switches to double-precision factors
 };
 
 /// Deleter for SUNLinearSolver handles.
@@ -82,9 +84,11 @@ LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSol
                                     FillOrder order = {});
 
 /// MUMPS (sequential build; multifrontal LU, BLAS-3) with AMD or METIS ordering (COLAMD maps
-/// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup.
-LinearSolverPtr make_mumps_solver(Ordering ordering, SUNContext ctx, LinearSolverStats* stats,
-                                  FillOrder order = {});
+/// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup. Mixed precision:
+/// single-precision factors, solutions refined in double precision to a componentwise
+/// backward error ≤ 1e-6, falling back to double-precision factors when that fails.
+LinearSolverPtr make_mumps_solver(Ordering ordering, FactorPrecision precision, SUNContext ctx,
+                                  LinearSolverStats* stats, FillOrder order = {});
 
 /// Right-preconditioned FGMRES (SUNDIALS SPFGMR) on the whole system, solved to
 /// `config.rtol` so that Newton sees an exact solve, with the block upper-triangular
