@@ -1,4 +1,4 @@
-// Command-line front end: biphasic run CASE [-o DIR] [--set key=value ...].
+// Command-line front end: biphasic run|check CASE [-o DIR] [--set key=value ...].
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +13,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   biphasic run CASE.toml [-o DIR] [--set KEY=VALUE ...] [--quiet]
+  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) only
   biphasic schema            print the case-file reference (Markdown)
   biphasic --help | --version
 
@@ -26,7 +27,8 @@ goes, into DIR (default: results/<case name>):
 Exit status: 0 success, 1 bad input (all problems listed), 2 failed solve.
 )";
 
-int run_command(const std::vector<std::string>& args) {
+/// `run`, or `check` (validate == true): reads and validates the case, then runs it or stops.
+int run_command(const std::vector<std::string>& args, bool validate_only) {
   std::string case_path, out_dir;
   std::vector<std::string> overrides;
   biphasic::RunOptions options;
@@ -55,6 +57,10 @@ int run_command(const std::vector<std::string>& args) {
   }
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
+  if (validate_only) {
+    std::cout << case_path << ": valid\n";
+    return 0;
+  }
   options.output_dir =
       out_dir.empty() ? ("results/" + std::filesystem::path(case_path).stem().string()) : out_dir;
   biphasic::run_case(config, options);
@@ -78,7 +84,8 @@ int main(int argc, char** argv) {
       std::cout << biphasic::case_schema_markdown();
       return 0;
     }
-    if (args[0] == "run") return run_command({args.begin() + 1, args.end()});
+    if (args[0] == "run") return run_command({args.begin() + 1, args.end()}, false);
+    if (args[0] == "check") return run_command({args.begin() + 1, args.end()}, true);
     throw std::invalid_argument("unknown command '" + args[0] + "' (try --help)");
   } catch (const biphasic::CaseError& e) {
     std::cerr << "error: the case has " << e.problems().size() << " problem(s):\n";

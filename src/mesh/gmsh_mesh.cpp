@@ -396,6 +396,27 @@ void validate(const QuarterCylinderSpec& spec) {
     detail::require_positive("grading_distance", spec.grading_distance);
   }
   detail::require_known_faces(spec.grading_faces, kCylinderFaces);
+  if (spec.layers < 0) {
+    throw std::runtime_error("layers = " + std::to_string(spec.layers) + " must be >= 0");
+  }
+  if (spec.layers > 0 && !spec.grading_faces.empty()) {
+    throw std::runtime_error(
+        "grading_faces (unstructured grading) and layers > 0 (a swept mesh) "
+        "exclude each other; grade a swept mesh with layer_grading_faces");
+  }
+  if (spec.layers == 0 && !spec.layer_grading_faces.empty()) {
+    throw std::runtime_error("layer_grading_faces needs layers > 0");
+  }
+}
+
+/// The z of the layer interfaces of a swept quarter cylinder (column_layer_z's grading).
+std::vector<double> cylinder_layer_z(const QuarterCylinderSpec& spec) {
+  ColumnSpec column;
+  column.height = spec.height;
+  column.nz = spec.layers;
+  column.grading_faces = spec.layer_grading_faces;
+  column.grading_ratio = spec.layer_grading_ratio;
+  return column_layer_z(column);
 }
 
 // Surface tags of the quarter cylinder, indexed like kCylinderFaces, found from bounding boxes.
@@ -521,9 +542,32 @@ Mesh generate_quarter_cylinder(const QuarterCylinderSpec& spec) {
     validate(spec);
     const detail::GmshSizing sizing{spec.lc, spec.grading_ratio, spec.grading_distance,
                                     std::max(spec.radius * std::numbers::pi / 2, spec.height)};
+    const std::vector<double> layer_z =
+        spec.layers > 0 ? cylinder_layer_z(spec) : std::vector<double>{};
     return detail::mesh_with_gmsh(sizing, spec.write_msh, [&] {
-      const int volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, spec.height, spec.radius, -1,
-                                                       std::numbers::pi / 2);
+      int volume = -1;
+      if (layer_z.empty()) {
+        volume = gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, spec.height, spec.radius, -1,
+                                               std::numbers::pi / 2);
+      } else {
+        namespace occ = gmsh::model::occ;
+        const int centre = occ::addPoint(0, 0, 0);
+        const int on_x = occ::addPoint(spec.radius, 0, 0);
+        const int on_y = occ::addPoint(0, spec.radius, 0);
+        const int loop =
+            occ::addCurveLoop({occ::addLine(centre, on_x), occ::addCircleArc(on_x, centre, on_y),
+                               occ::addLine(on_y, centre)});
+        const int disc = occ::addPlaneSurface({loop});
+        // One element per layer; the layer tops as fractions of the height.
+        std::vector<int> per_layer(static_cast<std::size_t>(spec.layers), 1);
+        std::vector<double> tops(layer_z.begin() + 1, layer_z.end());
+        for (double& z : tops) z /= spec.height;
+        tops.back() = 1.0;
+        gmsh::vectorpair swept;
+        occ::extrude({{2, disc}}, 0, 0, spec.height, swept, per_layer, tops, false);
+        for (const auto& [dim, tag] : swept)
+          if (dim == 3) volume = tag;
+      }
       gmsh::model::occ::synchronize();
       const std::vector<int> faces = classify_cylinder_faces(spec);
       detail::add_physical_groups(volume, faces, kCylinderFaces);

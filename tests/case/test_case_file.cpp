@@ -587,7 +587,7 @@ line_end = [0, 0, 4]
     EXPECT_TRUE(j.contains(section)) << section;
   }
   EXPECT_EQ(j["time"]["newton"].size(), 7u);
-  EXPECT_EQ(j["mesh"].size(), 11u);  // nine keys, [mesh.column], [mesh.sphere_octant]
+  EXPECT_EQ(j["mesh"].size(), 14u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
   EXPECT_EQ(j["mesh"]["column"].size(), 8u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
@@ -674,6 +674,26 @@ grading_ratio = 3
   ASSERT_EQ(layers.size(), 1u);
   EXPECT_TRUE(has_problem(layers, {"mesh.column.nz = 2: must be >= 3 to grade the layers toward "
                                    "[\"top\", \"bottom\"]"}));
+
+  // A swept quarter cylinder: graded by its layers only, with enough of them; layer keys
+  // belong to the quarter cylinder.
+  const auto swept = problems_of(kMinimalCase + R"(
+[mesh]
+layers = 2
+layer_grading_faces = ["top", "bottom"]
+layer_grading_ratio = 4
+grading_faces = ["top"]
+)");
+  ASSERT_EQ(swept.size(), 2u);
+  EXPECT_TRUE(has_problem(swept, {"mesh.grading_faces = [\"top\"]", "mesh.layer_grading_faces"}));
+  EXPECT_TRUE(has_problem(swept, {"mesh.layers = 2: must be >= 3"}));
+  const auto unswept = problems_of(kMinimalCase + "[mesh]\nlayer_grading_faces = [\"top\"]\n");
+  ASSERT_EQ(unswept.size(), 1u);
+  EXPECT_TRUE(has_problem(unswept, {"mesh.layer_grading_faces", "mesh.layers > 0"}));
+  const auto column = problems_of(kMinimalCase + "[mesh]\nsource = \"column\"\nlayers = 4\n");
+  ASSERT_EQ(column.size(), 1u);
+  EXPECT_TRUE(has_problem(column, {"mesh.layers = 4: applies only to mesh.source = "
+                                   "\"quarter_cylinder\""}));
 }
 
 TEST(CaseFile, ReactionBoundariesNeedADisplacementOrSymmetryCondition) {

@@ -198,6 +198,41 @@ TEST(MeshQuarterCylinderGrading, RefinesTowardTheGradedFaces) {
   EXPECT_NO_THROW(biphasic::check_mesh(graded));
 }
 
+// A swept mesh: every vertex lies on one of the layer planes column_layer_z gives, every layer
+// is used, the volume is the quarter cylinder's, and the boundaries are the usual five.
+TEST(MeshQuarterCylinderSwept, VerticesLieOnTheGradedLayers) {
+  auto spec = spec_with_lc(3.0);
+  spec.layers = 9;
+  spec.layer_grading_faces = {"bottom", "top"};
+  spec.layer_grading_ratio = 8.0;
+  const Mesh mesh = biphasic::generate_quarter_cylinder(spec);
+  EXPECT_NO_THROW(biphasic::check_mesh(mesh));
+  EXPECT_EQ(mesh.boundary_names(),
+            (std::vector<std::string>{"bottom", "top", "lateral", "symmetry_x", "symmetry_y"}));
+  biphasic::ColumnSpec column;
+  column.height = kH;
+  column.nz = 9;
+  column.grading_faces = {"bottom", "top"};
+  column.grading_ratio = 8.0;
+  const std::vector<double> planes = biphasic::column_layer_z(column);
+  std::vector<int> used(planes.size(), 0);
+  for (Index v = 0; v < mesh.num_vertices; ++v) {
+    const double z = mesh.nodes[v][2];
+    const auto near = std::min_element(planes.begin(), planes.end(), [z](double a, double b) {
+      return std::abs(a - z) < std::abs(b - z);
+    });
+    ASSERT_LT(std::abs(*near - z), 1e-9 * kH) << "vertex " << v << " at z = " << z;
+    ++used[static_cast<std::size_t>(near - planes.begin())];
+  }
+  for (std::size_t k = 0; k < used.size(); ++k) EXPECT_GT(used[k], 0) << "plane " << k;
+  // Thinnest layer 8 times thinner than the thickest, at the faces.
+  EXPECT_NEAR((planes[5] - planes[4]) / (planes[1] - planes[0]), 8.0, 1e-9);
+  double volume = 0.0;
+  for (const auto& tet : mesh.tets) volume += p2test::tet_volume(mesh, tet);
+  const double exact = pi * kR * kR * kH / 4;
+  EXPECT_NEAR(volume, exact, 1e-5 * exact);
+}
+
 TEST(MeshQuarterCylinderSpec, InvalidSpecsAreErrors) {
   auto unknown = spec_with_lc(4.0);
   unknown.grading_faces = {"top", "side"};
@@ -220,6 +255,14 @@ TEST(MeshQuarterCylinderSpec, InvalidSpecsAreErrors) {
   auto radius = spec_with_lc(4.0);
   radius.radius = -1.0;
   EXPECT_THROW(biphasic::generate_quarter_cylinder(radius), std::runtime_error);
+  auto both = spec_with_lc(4.0);
+  both.layers = 4;
+  both.grading_faces = {"top"};
+  both.grading_ratio = 2.0;
+  EXPECT_THROW(biphasic::generate_quarter_cylinder(both), std::runtime_error);
+  auto unswept = spec_with_lc(4.0);
+  unswept.layer_grading_faces = {"top"};
+  EXPECT_THROW(biphasic::generate_quarter_cylinder(unswept), std::runtime_error);
 }
 
 bool same_mesh(const Mesh& a, const Mesh& b) {

@@ -22,7 +22,14 @@ struct QuarterCylinderSpec {
   std::vector<std::string> grading_faces;
   double grading_ratio = 1.0;     ///< ≥ 1
   double grading_distance = 2.0;  ///< [mm]
-  std::string write_msh;          ///< if not empty, write the generated mesh here (.msh 4.1)
+  /// > 0: a swept mesh instead — the bottom quarter disc triangulated at lc and extruded
+  /// along z in this many layers of tetrahedra (three per prism), the layer thicknesses graded
+  /// toward layer_grading_faces ("bottom", "top") as in column_layer_z. Resolves the thin
+  /// boundary layers at the drained faces with few elements. Excludes grading_faces.
+  int layers = 0;
+  std::vector<std::string> layer_grading_faces;
+  double layer_grading_ratio = 1.0;  ///< thickest over thinnest layer, ≥ 1
+  std::string write_msh;             ///< if not empty, write the generated mesh here (.msh 4.1)
 };
 
 /// Generates the quarter cylinder with gmsh and returns it as a P2 mesh (edge nodes placed
