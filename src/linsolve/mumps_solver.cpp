@@ -185,28 +185,33 @@ double backward_error(SUNMatrix A, const double* b, const double* x, std::vector
 /// MUMPS as a SUNLinearSolver, in double or mixed precision. Mixed: single-precision factors;
 /// each solution is refined in double precision (x ← x + LU⁻¹(b − A x)) until its
 /// componentwise backward error is at most kTargetBackwardError. A single-precision
-/// factorisation that fails, or a refinement that stalls, switches the solver to double
-/// precision for the rest of the run (counted in the stats).
+/// factorisation that fails, or a refinement that stalls, falls back to double-precision
+/// factors (counted in the stats) for the next few factorisations — 4, then twice as many
+/// after each further fallback, up to 64 — before single precision is tried again: IDA's first
+/// steps (h ~ 1e-6 s) need double precision, its later steps do not.
 class MumpsSolver final : public detail::DirectSolver {
  public:
   static constexpr double kTargetBackwardError = 1e-6;
   static constexpr int kMaxRefinementSteps = 10;
+  static constexpr int kFirstBackoff = 4, kMaxBackoff = 64;
 
   MumpsSolver(Ordering ordering, FactorPrecision precision, LinearSolverStats* stats,
               FillOrder order)
-      : DirectSolver(stats), ordering_(ordering), order_(std::move(order)) {
-    if (precision == FactorPrecision::Mixed)
-      single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_);
-    else
-      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
-  }
+      : DirectSolver(stats),
+        ordering_(ordering),
+        order_(std::move(order)),
+        mixed_(precision == FactorPrecision::Mixed) {}
 
   int setup(SUNMatrix A) override {
-    if (single_) {
+    if (mixed_ && double_factorisations_left_ == 0) {
+      if (!single_) {
+        double_.reset();  // one set of factors at a time
+        single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_);
+      }
       if (single_->factorise(A, stats())) return SUNLS_SUCCESS;
       fall_back_to_double();
     }
-    return double_->factorise(A, stats()) ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
+    return factorise_double(A) ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
   }
 
   int solve(SUNMatrix A, N_Vector x, N_Vector b) override {
@@ -227,19 +232,30 @@ class MumpsSolver final : public detail::DirectSolver {
     }
     if (omega <= kTargetBackwardError) return SUNLS_SUCCESS;
     fall_back_to_double();
-    if (!double_->factorise(A, stats())) return SUNLS_PACKAGE_FAIL_UNREC;
+    if (!factorise_double(A)) return SUNLS_PACKAGE_FAIL_UNREC;
     return double_->solve(b_.data(), xv) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;
   }
 
  private:
   void fall_back_to_double() {
-    single_.reset();
-    double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
     ++stats().precision_fallbacks;
+    double_factorisations_left_ = backoff_;
+    backoff_ = std::min(2 * backoff_, kMaxBackoff);
+  }
+  bool factorise_double(SUNMatrix A) {
+    if (!double_) {
+      single_.reset();
+      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
+    }
+    if (double_factorisations_left_ > 0) --double_factorisations_left_;
+    return double_->factorise(A, stats());
   }
 
   Ordering ordering_;
   FillOrder order_;
+  bool mixed_;
+  int double_factorisations_left_ = 0;  ///< mixed: double-precision factorisations still due
+  int backoff_ = kFirstBackoff;         ///< mixed: length of the next fallback
   std::unique_ptr<MumpsInstance<SinglePrecision>> single_;
   std::unique_ptr<MumpsInstance<DoublePrecision>> double_;
   std::vector<double> b_, r_, scale_;  ///< refinement work vectors
