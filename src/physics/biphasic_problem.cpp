@@ -410,11 +410,40 @@ void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, cons
 }
 
 void BiphasicProblem::assemble(double t, const double* y, const double* ydot, double* F) {
-  std::fill(F, F + size(), 0.0);
-  for_each_element(false, y, ydot, [&](Index e, const ElementOutput& out) {
-    const Tet10& tet = mesh_.tets[e];
-    for (int s = 0; s < kElementDofs; ++s) F[pattern_.global_dof(tet, s)] += out.residual(s);
-  });
+  // Each thread adds its share of the elements into its own vector; the vectors are summed
+  // into F. Two barriers per residual, where the coloured loop of the Jacobian needs one per
+  // colour.
+  static const int threads = assembly_threads();
+  const auto n = static_cast<std::ptrdiff_t>(size());
+  const auto num_elements = static_cast<std::ptrdiff_t>(mesh_.tets.size());
+  thread_residuals_.resize(static_cast<std::size_t>(threads));
+  std::string failure;
+#pragma omp parallel num_threads(threads)
+  {
+    const int me = omp_get_thread_num();
+    const int team = omp_get_num_threads();
+    std::vector<double>& mine = thread_residuals_[static_cast<std::size_t>(me)];
+    mine.assign(static_cast<std::size_t>(n), 0.0);
+    ElementOutput out;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t e = 0; e < num_elements; ++e) {
+      try {
+        element(static_cast<Index>(e), y, ydot, false, out);
+        const Tet10& tet = mesh_.tets[static_cast<std::size_t>(e)];
+        for (int s = 0; s < kElementDofs; ++s) mine[pattern_.global_dof(tet, s)] += out.residual(s);
+      } catch (const InvertedElement& err) {
+#pragma omp critical(biphasic_assembly_failure)
+        if (failure.empty()) failure = err.what();
+      }
+    }
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (int k = 0; k < team; ++k) sum += thread_residuals_[static_cast<std::size_t>(k)][i];
+      F[i] = sum;
+    }
+  }
+  if (!failure.empty()) throw InvertedElement(failure);
   for (const NodalLoad& l : nodal_loads_) {
     const double scale = l.value * curve_value(l.curve, t);
     for (const auto& [row, amount] : l.entries) F[row] += scale * amount;

@@ -170,6 +170,9 @@ class BiphasicProblem {
   std::vector<double> flux_beta_;
   SparsityPattern pattern_;
   std::vector<std::vector<Index>> colours_;  ///< elements sharing no node, per colour
+  /// Per-thread residual accumulators: the residual loop runs over all elements at once (two
+  /// barriers instead of one per colour, which matters when a core is shared or stolen).
+  std::vector<std::vector<double>> thread_residuals_;
   std::vector<Dirichlet> dirichlet_;
   std::vector<char> constrained_;
   /// Displacement rows fixed by each boundary's own displacement and symmetry conditions.
