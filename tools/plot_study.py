@@ -1,0 +1,330 @@
+#!/usr/bin/python3
+"""Figures from study tables (runs.csv written by tools/study.py) and the runs' line.csv.
+
+usage: tools/plot_study.py KIND STUDY_DIR [STUDY_DIR ...] -o OUT_DIR
+
+KIND:
+  paper          the paper's figures (study paper_figures [+ paper_figures_mesh4])
+  sensitivity    time step and loading rate, backward Euler and BDF (study time_step)
+  work           work-precision: discrepancy at the end against wall time and factorisations
+  stability      first-step overshoot over (k, dt) per mesh with the line c dt / h^2 = 1/6
+  remedies       cost of accuracy: refinement, GLS, graded mesh (study remedies)
+
+Each writes PNG files into OUT_DIR and prints their names.
+"""
+import argparse
+import csv
+import math
+import pathlib
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def read_rows(dirs):
+    rows = []
+    for d in dirs:
+        with open(pathlib.Path(d) / "runs.csv") as f:
+            for row in csv.DictReader(f):
+                row["_dir"] = pathlib.Path(d) / "runs" / row["run"]
+                rows.append(row)
+    return rows
+
+
+def num(row, key):
+    v = row.get(key, "")
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def line_at(run_dir, t=None):
+    """(z, p, uz) on the line at time t (default: the last output)."""
+    data = {}
+    with open(pathlib.Path(run_dir) / "line.csv") as f:
+        for r in csv.DictReader(f):
+            data.setdefault(float(r["t"]), []).append((float(r["z"]), float(r["p"]), float(r["uz"])))
+    times = sorted(data)
+    key = times[-1] if t is None else min(times, key=lambda x: abs(x - t))
+    pts = sorted(data[key])
+    return [p[0] for p in pts], [p[1] for p in pts], [p[2] for p in pts]
+
+
+def axial_strain(z, uz):
+    """Compressive axial strain −du_z/dz at the nodes (one-sided at the ends)."""
+    out = []
+    for i in range(len(z)):
+        a, b = max(i - 1, 0), min(i + 1, len(z) - 1)
+        out.append(-(uz[b] - uz[a]) / (z[b] - z[a]))
+    return out
+
+
+def reference_dir(row):
+    label = row.get("reference", "")
+    if not label:
+        return None
+    path = pathlib.Path(label.split()[-1])
+    return path if path.is_absolute() else ROOT / path
+
+
+def select(rows, **conds):
+    out = []
+    for r in rows:
+        ok = True
+        for k, v in conds.items():
+            rv = r.get(k, "")
+            if isinstance(v, float):
+                ok = ok and rv != "" and math.isclose(float(rv), v, rel_tol=1e-9)
+            else:
+                ok = ok and rv == str(v)
+        if ok:
+            out.append(r)
+    return out
+
+
+def mesh_label(row):
+    lc = num(row, "mesh_lc")
+    names = {1.3: "mesh 1", 0.98: "mesh 2", 0.73: "mesh 3", 0.57: "mesh 4"}
+    layers = int(num(row, "mesh_layers") or 0)
+    if layers > 0:
+        return f"swept, {layers} layers"
+    return next((n for v, n in names.items() if math.isclose(v, lc)), f"lc {lc:g}")
+
+
+def pressure_panel(ax, runs, label_of, title, with_reference=True):
+    ref_drawn = False
+    for r in runs:
+        z, p, _ = line_at(r["_dir"])
+        ax.plot(z, [v * 1e3 for v in p], marker=".", ms=3, lw=1, label=label_of(r))
+    if with_reference and runs:
+        ref = reference_dir(runs[0])
+        if ref and (ref / "line.csv").is_file() and not ref_drawn:
+            z, p, _ = line_at(ref, num(runs[0], "t_end"))
+            ax.plot(z, [v * 1e3 for v in p], "k--", lw=1, label="reference")
+    ax.set_xlabel("z on the axis [mm]")
+    ax.set_ylabel("pressure [kPa]")
+    ax.set_title(title, fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+
+
+def save(fig, out, name):
+    path = pathlib.Path(out) / name
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(path)
+
+
+def kfmt(r):
+    return f"k = {num(r, 'permeability'):g}"
+
+
+# ---- kinds ---------------------------------------------------------------------------------
+
+def paper(rows, out):
+    mesh2_k01 = [r for r in select(rows, sweep="permeability") if math.isclose(num(r, "permeability"), 0.1)]
+    if mesh2_k01:
+        r = mesh2_k01[0]
+        z, p, uz = line_at(r["_dir"])
+        fig, (a, b) = plt.subplots(1, 2, figsize=(9, 3.6))
+        a.plot(z, [100 * e for e in axial_strain(z, uz)], ".-")
+        a.set_xlabel("z [mm]"), a.set_ylabel("axial strain [%]"), a.grid(alpha=0.3)
+        a.set_title("nodal strain on the axis, mesh 2, k = 0.1, 1 % strain", fontsize=9)
+        b.plot(z, [v * 1e3 for v in p], ".-")
+        b.set_xlabel("z [mm]"), b.set_ylabel("pressure [kPa]"), b.grid(alpha=0.3)
+        b.set_title("pressure on the axis", fontsize=9)
+        save(fig, out, "paper_mesh2_k0.1_strain_pressure.png")
+    perm = select(rows, sweep="permeability")
+    if perm:
+        fig, ax = plt.subplots(figsize=(6, 4))
+        pressure_panel(ax, sorted(perm, key=lambda r: -num(r, "permeability")), kfmt,
+                       "influence of permeability, mesh 2, no GLS", with_reference=False)
+        save(fig, out, "paper_permeability.png")
+    for sweep, ks, name in (("refine_nogls", (1e-2, 5e-3, 1e-3), "no GLS"),
+                            ("refine_gls", (5e-3, 1e-3), "GLS")):
+        runs = select(rows, sweep=sweep)
+        if not runs:
+            continue
+        fig, axes = plt.subplots(1, len(ks), figsize=(4.2 * len(ks), 3.8), squeeze=False)
+        for ax, k in zip(axes[0], ks):
+            sel = sorted([r for r in runs if math.isclose(num(r, "permeability"), k)],
+                         key=lambda r: num(r, "unknowns"))
+            pressure_panel(ax, sel, lambda r: f"{mesh_label(r)} (disc. {100 * num(r, 'discrepancy'):.1f} %)",
+                           f"mesh refinement, {name}, k = {k:g}")
+        save(fig, out, f"paper_{sweep}.png")
+    strain = select(rows, sweep="strain")
+    if strain:
+        fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
+        for ax, stab in zip(axes, ("none", "gls")):
+            sel = sorted(select(strain, stabilisation=stab), key=lambda r: num(r, "strain"))
+            for r in sel:
+                z, p, _ = line_at(r["_dir"])
+                pm = max(abs(v) for v in p) or 1.0
+                ax.plot(z, [v / pm for v in p], ".-", ms=3,
+                        label=f"{100 * num(r, 'strain'):g} % (overshoot {100 * num(r, 'overshoot'):.1f} %)")
+            ax.set_xlabel("z [mm]"), ax.set_ylabel("p / max p"), ax.grid(alpha=0.3)
+            ax.set_title(f"higher strains, mesh 2, k = 1e-3, {'GLS' if stab == 'gls' else 'no GLS'}",
+                         fontsize=9)
+            ax.legend(fontsize=7)
+        save(fig, out, "paper_higher_strains.png")
+
+
+def sensitivity(rows, out):
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
+    for col, stab in enumerate(("none", "gls")):
+        be = sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt"))
+        pressure_panel(axes[0][col], be, lambda r: f"BE dt = {num(r, 'dt'):g} s "
+                       f"(osc. {num(r, 'oscillation_max'):.2f})",
+                       f"backward Euler, t = 32 s, {'GLS' if stab == 'gls' else 'no GLS'}")
+        bdf = sorted(select(rows, sweep="bdf_rtol", stabilisation=stab), key=lambda r: -num(r, "bdf_rtol"))
+        pressure_panel(axes[1][col], bdf, lambda r: f"BDF rtol = {num(r, 'bdf_rtol'):g} "
+                       f"(osc. {num(r, 'oscillation_max'):.2f})",
+                       f"variable-order BDF, t = 32 s, {'GLS' if stab == 'gls' else 'no GLS'}")
+    save(fig, out, "sensitivity_time_step.png")
+    # Early times: where the oscillation lives.
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    for ax, stab in zip(axes, ("none", "gls")):
+        for r in sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt")):
+            if num(r, "dt") > 8:
+                continue
+            z, p, _ = line_at(r["_dir"], 6.4)
+            ax.plot(z, [v * 1e3 for v in p], ".-", ms=3, label=f"BE dt = {num(r, 'dt'):g} s")
+        for r in select(rows, sweep="bdf_rtol", stabilisation=stab):
+            if math.isclose(num(r, "bdf_rtol"), 1e-4):
+                z, p, _ = line_at(r["_dir"], 6.4)
+                ax.plot(z, [v * 1e3 for v in p], "k-", lw=1.5, label="BDF rtol 1e-4")
+        ax.set_xlim(0, 2)
+        ax.set_xlabel("z [mm] (bottom fifth of the axis)"), ax.set_ylabel("pressure [kPa]")
+        ax.set_title(f"t = 6.4 s near the drained bottom, {'GLS' if stab == 'gls' else 'no GLS'}",
+                     fontsize=9)
+        ax.grid(alpha=0.3), ax.legend(fontsize=7)
+    save(fig, out, "sensitivity_early_time.png")
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    for ax, integ in zip(axes, ("be_rate", "bdf_rate")):
+        for stab, style in (("none", "-"), ("gls", "--")):
+            for r in sorted(select(rows, sweep=integ, stabilisation=stab),
+                            key=lambda r: num(r, "loading_rate_um_s")):
+                z, p, _ = line_at(r["_dir"])
+                pm = max(p) or 1.0
+                ax.plot(z, [v / pm for v in p], style, label=f"{num(r, 'loading_rate_um_s'):g} um/s, "
+                        f"{stab} (overshoot {100 * num(r, 'overshoot_max'):.1f} %)")
+        ax.set_xlabel("z [mm]"), ax.set_ylabel("p / max p at 1 % strain"), ax.grid(alpha=0.3)
+        ax.set_title("loading rate, " + ("backward Euler dt = 6.4 s" if integ == "be_rate"
+                                         else "BDF rtol 1e-4"), fontsize=9)
+        ax.legend(fontsize=6)
+    save(fig, out, "sensitivity_loading_rate.png")
+
+
+def work(rows, out):
+    for xkey, xlabel, name in (("wall_s", "wall time [s]", "work_precision_wall.png"),
+                               ("factorizations", "factorisations", "work_precision_factorisations.png")):
+        fig, ax = plt.subplots(figsize=(7, 5))
+        groups = {}
+        for r in rows:
+            if r.get("status") != "completed":
+                continue
+            integ = "BE" if r["integrator"] == "backward_euler" else "BDF"
+            groups.setdefault((mesh_label(r), integ, r["stabilisation"]), []).append(r)
+        for (mesh, integ, stab), rs in sorted(groups.items()):
+            rs.sort(key=lambda r: num(r, xkey))
+            ax.loglog([num(r, xkey) for r in rs], [100 * num(r, "discrepancy") for r in rs],
+                      ("o-" if integ == "BE" else "s--"), ms=4,
+                      label=f"{mesh}, {integ}, {'GLS' if stab == 'gls' else 'no GLS'}")
+        ax.axhline(1.0, color="grey", lw=0.8)
+        ax.set_xlabel(xlabel), ax.set_ylabel("discrepancy at t = 32 s [%]")
+        ax.set_title("work-precision, k = 1e-3 (BE over dt, BDF over rtol)", fontsize=9)
+        ax.grid(alpha=0.3, which="both"), ax.legend(fontsize=7)
+        save(fig, out, name)
+
+
+def stability(rows, out):
+    meshes = sorted({mesh_label(r) for r in rows})
+    for stab in ("none", "gls"):
+        fig, axes = plt.subplots(1, len(meshes), figsize=(4.3 * len(meshes), 3.8), squeeze=False)
+        for ax, mesh in zip(axes[0], meshes):
+            sel = [r for r in rows if mesh_label(r) == mesh and r["stabilisation"] == stab
+                   and r.get("status") == "completed"]
+            if not sel:
+                continue
+            ks = sorted({num(r, "permeability") for r in sel})
+            dts = sorted({num(r, "dt") for r in sel})
+            grid = [[math.nan] * len(dts) for _ in ks]
+            for r in sel:
+                grid[ks.index(num(r, "permeability"))][dts.index(num(r, "dt"))] = 100 * num(r, "overshoot")
+            im = ax.imshow(grid, origin="lower", cmap="magma_r", vmin=0, vmax=40, aspect="auto")
+            for i in range(len(ks)):
+                for j in range(len(dts)):
+                    ax.text(j, i, f"{grid[i][j]:.0f}", ha="center", va="center", fontsize=7,
+                            color="white" if grid[i][j] > 20 else "black")
+            ax.set_xticks(range(len(dts)), [f"{d:g}" for d in dts])
+            ax.set_yticks(range(len(ks)), [f"{k:g}" for k in ks])
+            ax.set_xlabel("dt [s]"), ax.set_ylabel("k [mm^4/(N s)]")
+            # c dt / h^2 = 1/6 with c = k (lambda + 2 mu): k = h^2 / (6 (lambda + 2 mu) dt),
+            # drawn in index coordinates (log-interpolated between the ticks).
+            h, m = num(sel[0], "h_line"), num(sel[0], "lambda") + 2 * num(sel[0], "mu")
+
+            def index_of(v, axis):
+                lv = [math.log(a) for a in axis]
+                x = math.log(v)
+                if x <= lv[0]:
+                    return (x - lv[0]) / (lv[1] - lv[0])
+                for i in range(1, len(lv)):
+                    if x <= lv[i]:
+                        return i - 1 + (x - lv[i - 1]) / (lv[i] - lv[i - 1])
+                return len(lv) - 1 + (x - lv[-1]) / (lv[-1] - lv[-2])
+            xs = [dts[0] * (dts[-1] / dts[0]) ** (s / 50) for s in range(51)]
+            ax.plot([index_of(d, dts) for d in xs], [index_of(h * h / (6 * m * d), ks) for d in xs],
+                    "c-", lw=2, label="c dt / h^2 = 1/6")
+            ax.set_ylim(-0.5, len(ks) - 0.5), ax.set_xlim(-0.5, len(dts) - 0.5)
+            ax.set_title(f"{mesh} (h = {h:.2f} mm), {'GLS' if stab == 'gls' else 'no GLS'}: "
+                         "first-step overshoot [%]", fontsize=8)
+            ax.legend(fontsize=7, loc="lower right")
+        fig.colorbar(im, ax=axes[0].tolist(), shrink=0.8)
+        path = pathlib.Path(out) / f"stability_map_{stab}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        print(path)
+
+
+def remedies(rows, out):
+    fig, ax = plt.subplots(figsize=(7, 5))
+    series = {
+        "uniform refinement, no GLS": [r for r in select(rows, sweep="uniform", stabilisation="none")],
+        "GLS, same meshes": [r for r in select(rows, sweep="uniform", stabilisation="gls")],
+        "swept mesh graded toward the drained faces, no GLS": select(rows, sweep="graded"),
+    }
+    for (label, rs), style in zip(series.items(), ("o-", "s-", "^-")):
+        rs = [r for r in rs if r.get("status") == "completed"]
+        rs.sort(key=lambda r: num(r, "wall_s"))
+        ax.loglog([num(r, "wall_s") for r in rs], [100 * num(r, "discrepancy") for r in rs], style,
+                  label=label)
+        for r in rs:
+            ax.annotate(f"{num(r, 'unknowns') / 1e3:.0f}k", (num(r, "wall_s"), 100 * num(r, "discrepancy")),
+                        fontsize=6, xytext=(3, 3), textcoords="offset points")
+    ax.axhline(1.0, color="grey", lw=0.8)
+    ax.set_xlabel("wall time [s]"), ax.set_ylabel("discrepancy at t = 32 s [%]")
+    ax.set_title("cost of accuracy, k = 1e-3, backward Euler dt = 6.4 s (labels: unknowns)", fontsize=9)
+    ax.grid(alpha=0.3, which="both"), ax.legend(fontsize=7)
+    save(fig, out, "remedies_cost_of_accuracy.png")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("kind", choices=["paper", "sensitivity", "work", "stability", "remedies"])
+    ap.add_argument("studies", nargs="+")
+    ap.add_argument("-o", "--output", default=str(ROOT / "docs" / "figures" / "results"))
+    args = ap.parse_args()
+    pathlib.Path(args.output).mkdir(parents=True, exist_ok=True)
+    rows = read_rows(args.studies)
+    globals()[args.kind](rows, args.output)
+
+
+if __name__ == "__main__":
+    main()

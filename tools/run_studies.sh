@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Runs the studies of cases/studies/ (tools/study.py: both cores, runs already done are
+# skipped, reference solutions cached in results/references/), then draws every figure into
+# docs/figures/results/ and the tables of docs/results.md (tools/results_tables.py).
+# usage: tools/run_studies.sh [SET]
+#   SET = main (default; about 45 minutes on 2 cores from scratch): time_step, work_precision,
+#         remedies, paper_figures, stability_map_mesh1..3
+#   SET = all: main + paper_figures_mesh4 and stability_map_mesh4 (about 1 hour more)
+#   SET = plots: only redraw figures and tables from the runs already done
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+set_name=${1:-main}
+py=/usr/bin/python3
+studies=(time_step work_precision remedies paper_figures stability_map_mesh1 stability_map_mesh2
+         stability_map_mesh3)
+[[ $set_name == all ]] && studies+=(paper_figures_mesh4 stability_map_mesh4)
+if [[ $set_name != plots ]]; then
+  "$root/tools/build.sh"
+  for s in "${studies[@]}"; do
+    $py "$root/tools/study.py" "$root/cases/studies/$s.toml"
+  done
+fi
+res="$root/results/studies"
+fig="$root/docs/figures/results"
+have() { [[ -f "$res/$1/runs.csv" ]]; }
+have time_step && $py "$root/tools/plot_study.py" sensitivity "$res/time_step" -o "$fig"
+have work_precision && $py "$root/tools/plot_study.py" work "$res/work_precision" -o "$fig"
+have remedies && $py "$root/tools/plot_study.py" remedies "$res/remedies" -o "$fig"
+paper=()
+for s in paper_figures paper_figures_mesh4; do have $s && paper+=("$res/$s"); done
+((${#paper[@]})) && $py "$root/tools/plot_study.py" paper "${paper[@]}" -o "$fig"
+maps=()
+for m in 1 2 3 4; do have stability_map_mesh$m && maps+=("$res/stability_map_mesh$m"); done
+((${#maps[@]})) && $py "$root/tools/plot_study.py" stability "${maps[@]}" -o "$fig"
+$py "$root/tools/results_tables.py" "$res" > "$root/docs/results_tables.md"
+echo "figures: $fig; tables: docs/results_tables.md"

@@ -1,0 +1,502 @@
+#!/usr/bin/python3
+"""Run a parameter study: every combination of the sweeps in a study file, on both cores,
+skipping runs already done, into one tidy CSV table (one row per run).
+
+usage: tools/study.py STUDY.toml [-o DIR] [--jobs N] [--dry-run] [--retry-failed]
+
+A study file (TOML, see docs/studies.md):
+
+    title = "Time-step sensitivity, mesh 1"
+    base = "../paper/mesh1_k1e-3_gls.toml"     # relative to the study file
+    set = { "output.fields" = false }          # overrides for every run (optional)
+    reference = "reference.toml"               # optional: reference case for the discrepancy
+
+    [[sweep]]                                  # a study is the union of its sweeps
+    name = "be"
+    set = { "time.integrator" = "backward_euler" }
+    vary = { "time.dt" = [0.64, 3.2, 6.4, 8, 32], "stabilisation.type" = ["gls", "none"] }
+
+Keys of `set` and `vary` are case-file keys (anything `biphasic run --set` takes), or:
+  mesh           the paper's mesh 1-4 (mesh.lc = 1.3, 0.98, 0.73, 0.57 mm)
+  loading.rate   platen speed [um/s]; with loading.strain, sets the ramp, the platen
+  loading.strain final compressive strain [-]   displacement and time.t_end
+  time.steps     run this many steps of time.dt only (time.t_end = steps * dt), e.g. 1 for the
+                 first-step overshoot of a stability map
+
+Each run writes to DIR/runs/<sweep>/<parameters>/ (summary.json, line.csv, log.txt) and the
+table to DIR/runs.csv. Reference solutions (one per permeability, loading rate and strain) are
+computed once from the reference case and cached in results/references/ (shared by studies;
+BIPHASIC_REFERENCE_CACHE=DIR puts the cache elsewhere). BIPHASIC_BIN=PATH runs another build.
+"""
+import argparse
+import csv
+import hashlib
+import itertools
+import json
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import time
+import tomllib
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+BIN = pathlib.Path(os.environ.get("BIPHASIC_BIN", ROOT / "build" / "biphasic"))
+REFERENCE_CACHE = pathlib.Path(os.environ.get("BIPHASIC_REFERENCE_CACHE",
+                                              ROOT / "results" / "references"))
+PAPER_MESH_LC = {1: 1.3, 2: 0.98, 3: 0.73, 4: 0.57}
+# Parameters that define the physical problem (the reference depends on them only).
+PHYSICAL_KEYS = ("material.permeability", "material.lambda", "material.mu", "loading.rate",
+                 "loading.strain")
+
+
+class StudyError(Exception):
+    pass
+
+
+def toml_value(v):
+    """A value as `--set` takes it (TOML syntax)."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    return repr(v)
+
+
+def slug(params):
+    text = ",".join(f"{k.split('.')[-1]}={params[k]}" for k in sorted(params))
+    text = re.sub(r"[^A-Za-z0-9_.,=+-]", "_", text) or "base"
+    if len(text) > 100:
+        text = text[:80] + "_" + hashlib.sha1(text.encode()).hexdigest()[:10]
+    return text
+
+
+class BaseCase:
+    """What the runner needs to know of the base case to translate derived parameters."""
+
+    def __init__(self, path):
+        self.path = path
+        try:
+            self.toml = tomllib.loads(path.read_text())
+        except (OSError, tomllib.TOMLDecodeError) as e:
+            raise StudyError(f"{path}: {e}")
+        mesh = self.toml.get("mesh", {})
+        self.height = float(mesh.get("height", 8.0))
+        self.top = None
+        for i, bc in enumerate(self.toml.get("boundary", [])):
+            if bc.get("name") == "top" and bc.get("type") == "displacement":
+                self.top = (i, bc)
+        self.t_end = float(self.toml.get("time", {}).get("t_end", 32.0))
+
+    def loading_overrides(self, rate_um_s, strain, where):
+        if self.top is None:
+            raise StudyError(f"{where}: loading.rate/strain need a displacement condition on 'top' "
+                             f"in the base case {self.path}")
+        index, bc = self.top
+        curve = bc.get("curve")
+        if not curve:
+            raise StudyError(f"{where}: the top displacement in {self.path} has no load curve")
+        if rate_um_s <= 0 or strain <= 0:
+            raise StudyError(f"{where}: loading.rate = {rate_um_s} and loading.strain = {strain} "
+                             "must be > 0")
+        depth = strain * self.height  # mm
+        t_end = depth / (rate_um_s * 1e-3)
+        return {f"boundary[{index}].value": -depth, f"curves.{curve}": [[0.0, 0.0], [t_end, 1.0]],
+                "time.t_end": t_end}
+
+    def default_loading(self):
+        """(rate [um/s], strain) of the base case."""
+        index, bc = self.top if self.top else (None, {"value": -0.08})
+        depth = -float(bc.get("value", -0.08))
+        return depth / self.t_end * 1e3, depth / self.height
+
+
+def expand(params, base, where):
+    """Case-file overrides for one run's parameters (derived ones translated)."""
+    out = {}
+    rate, strain = base.default_loading()
+    loading = False
+    steps = None
+    for key, value in params.items():
+        if key == "mesh":
+            if value not in PAPER_MESH_LC:
+                raise StudyError(f"{where}: mesh = {value!r}: the paper's meshes are 1, 2, 3, 4")
+            out["mesh.lc"] = PAPER_MESH_LC[value]
+        elif key == "loading.rate":
+            rate, loading = float(value), True
+        elif key == "loading.strain":
+            strain, loading = float(value), True
+        elif key == "time.steps":
+            if not isinstance(value, int) or value < 1:
+                raise StudyError(f"{where}: time.steps = {value!r} must be an integer >= 1")
+            steps = value
+        else:
+            out[key] = value
+    if loading:
+        out.update(base.loading_overrides(rate, strain, where))
+    if steps is not None:
+        dt = float(out.get("time.dt", base.toml.get("time", {}).get("dt", 6.4)))
+        out["time.t_end"] = steps * dt
+    return out
+
+
+def load_study(path):
+    try:
+        study = tomllib.loads(path.read_text())
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        raise StudyError(f"{path}: {e}")
+    for key in study:
+        if key not in ("title", "base", "set", "reference", "sweep", "output"):
+            raise StudyError(f"{path}: unknown key '{key}' (title, base, set, reference, sweep, "
+                             "output)")
+    if "base" not in study:
+        raise StudyError(f"{path}: 'base' (the base case file) is missing")
+    base = BaseCase((path.parent / study["base"]).resolve())
+    if not base.path.is_file():
+        raise StudyError(f"{path}: base = '{study['base']}': no such file ({base.path})")
+    sweeps = study.get("sweep", [])
+    if not sweeps:
+        raise StudyError(f"{path}: no [[sweep]] tables")
+    runs = []
+    names = set()
+    for i, sw in enumerate(sweeps):
+        where = f"{path}: sweep[{i}]"
+        for key in sw:
+            if key not in ("name", "set", "vary"):
+                raise StudyError(f"{where}: unknown key '{key}' (name, set, vary)")
+        name = sw.get("name", f"sweep{i}")
+        if name in names:
+            raise StudyError(f"{where}: name = '{name}' is used twice")
+        names.add(name)
+        vary = sw.get("vary", {})
+        for key, values in vary.items():
+            if not isinstance(values, list) or not values:
+                raise StudyError(f"{where}: vary.{key} must be a non-empty list")
+        keys = list(vary)
+        for combo in itertools.product(*(vary[k] for k in keys)):
+            params = dict(zip(keys, combo))
+            fixed = {**study.get("set", {}), **sw.get("set", {}), **params}
+            runs.append({"sweep": name, "params": params, "fixed": fixed,
+                         "overrides": expand(fixed, base, where),
+                         "dir": f"{name}/{slug(params)}"})
+    reference = None
+    if "reference" in study:
+        reference = BaseCase((path.parent / study["reference"]).resolve())
+        if not reference.path.is_file():
+            raise StudyError(f"{path}: reference = '{study['reference']}': no such file")
+    return study, base, runs, reference
+
+
+def set_args(overrides):
+    args = []
+    for k, v in overrides.items():
+        args += ["--set", f"{k}={toml_value(v)}"]
+    return args
+
+
+def validate(base, runs):
+    """Checks every run's configuration with `biphasic check` before any work starts."""
+    for run in runs:
+        cmd = [str(BIN), "check", str(base.path)] + set_args(run["overrides"])
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode != 0:
+            raise StudyError(f"run {run['dir']}: {(r.stderr or r.stdout).strip()}")
+
+
+# ---- measures ------------------------------------------------------------------------------
+
+def read_line(path):
+    """{t: (s list, p list)} from a line.csv."""
+    out = {}
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            t = round(float(row["t"]), 9)
+            out.setdefault(t, ([], []))
+            out[t][0].append(float(row["z"]))
+            out[t][1].append(float(row["p"]))
+    for t, (z, p) in out.items():
+        order = sorted(range(len(z)), key=lambda i: z[i])
+        out[t] = ([z[i] for i in order], [p[i] for i in order])
+    return out
+
+
+def interpolate(x, xs, ys):
+    if x <= xs[0]:
+        return ys[0]
+    for i in range(1, len(xs)):
+        if x <= xs[i]:
+            w = (x - xs[i - 1]) / (xs[i] - xs[i - 1]) if xs[i] > xs[i - 1] else 0.0
+            return ys[i - 1] + w * (ys[i] - ys[i - 1])
+    return ys[-1]
+
+
+def discrepancy(run_line, ref_line):
+    """max_line |p_h − p_ref| / max_line |p_ref| at each output time the two share (t > 0)."""
+    out = {}
+    for t, (z, p) in run_line.items():
+        match = [tr for tr in ref_line if abs(tr - t) < 1e-6 * max(1.0, abs(t))]
+        if t <= 0 or not match:
+            continue
+        zr, pr = ref_line[match[0]]
+        scale = max(abs(v) for v in pr)
+        if scale == 0:
+            continue
+        out[t] = max(abs(pv - interpolate(zv, zr, pr)) for zv, pv in zip(z, p)) / scale
+    return out
+
+
+def row_for(run, run_dir, study_name, reference_info, rss_gb):
+    s = json.loads((run_dir / "summary.json").read_text())
+    cfg, c, tm = s["configuration"], s["counters"], s["timings"]
+    outs = [o for o in s["outputs"] if o["t"] > 0]
+    last = outs[-1] if outs else {}
+
+    def peak(key):
+        vals = [o[key] for o in outs if o.get(key) is not None]
+        return max(vals) if vals else None
+
+    top = next((b for b in cfg["boundary"] if b["name"] == "top" and b["type"] == "displacement"),
+               None)
+    height = cfg["mesh"].get("height", 8.0)
+    t_end = cfg["time"]["t_end"]
+    strain = -top["value"] / height if top else None
+    line_elements = (s["line"]["nodes"] - 1) // 2
+    row = {
+        "study": study_name, "sweep": run["sweep"], "run": run["dir"], "status": s["status"],
+        **{f"param:{k}": v for k, v in run["params"].items()},
+        "mesh_lc": cfg["mesh"].get("lc"), "mesh_layers": cfg["mesh"].get("layers", 0),
+        "unknowns": s["mesh"]["unknowns"], "tetrahedra": s["mesh"]["tetrahedra"],
+        "h_line": height / line_elements if line_elements > 0 else None,
+        "permeability": cfg["material"]["permeability"],
+        "lambda": cfg["material"]["lambda"], "mu": cfg["material"]["mu"],
+        "stabilisation": cfg["stabilisation"]["type"], "integrator": cfg["time"]["integrator"],
+        "dt": cfg["time"]["dt"], "bdf_rtol": cfg["time"]["bdf"]["rtol"],
+        "loading_rate_um_s": (-top["value"] / t_end * 1e3) if top else None,
+        "strain": strain, "t_end": t_end,
+        "linear_solver": cfg["linear_solver"]["type"],
+        "p_mid": last.get("p_mid"), "overshoot": last.get("overshoot"),
+        "overshoot_max": peak("overshoot"), "undershoot": last.get("undershoot"),
+        "undershoot_max": peak("undershoot"), "oscillation": last.get("oscillation"),
+        "oscillation_max": peak("oscillation"),
+        "discrepancy": None, "discrepancy_max": None, "reference": None,
+        "wall_s": tm["wall"], "peak_rss_gb": rss_gb,
+        "steps": c["steps"], "newton_iterations": c["newton_iterations"],
+        "residual_evaluations": c["residual_evaluations"],
+        "jacobian_evaluations": c["jacobian_evaluations"],
+        "factorizations": c["factorizations"], "linear_solves": c["linear_solves"],
+        "error_test_failures": c.get("error_test_failures"),
+        "nonlinear_failures": c.get("nonlinear_failures"),
+    }
+    if reference_info and (run_dir / "line.csv").is_file():
+        ref_dir, label = reference_info
+        d = discrepancy(read_line(run_dir / "line.csv"), read_line(ref_dir / "line.csv"))
+        if d:
+            final = max(d)
+            row["discrepancy"] = d[final]
+            row["discrepancy_max"] = max(d.values())
+            row["reference"] = label
+    return row
+
+
+# ---- references ----------------------------------------------------------------------------
+
+def reference_overrides(run, base, reference):
+    """The physical parameters of a run, applied to the reference case."""
+    physical = {k: v for k, v in run["fixed"].items() if k in PHYSICAL_KEYS}
+    rate, strain = base.default_loading()
+    physical.setdefault("loading.rate", round(rate, 12))
+    physical.setdefault("loading.strain", round(strain, 12))
+    return physical, expand(physical, reference, f"reference {reference.path}")
+
+
+def reference_key(reference, physical):
+    text = reference.path.read_text() + json.dumps(physical, sort_keys=True)
+    return hashlib.sha1(text.encode()).hexdigest()[:12]
+
+
+def reference_label(reference, physical, ref_dir):
+    s = json.loads((ref_dir / "summary.json").read_text())
+    k = s["configuration"]["material"]["permeability"]
+    where = ref_dir.relative_to(ROOT) if ref_dir.is_relative_to(ROOT) else ref_dir
+    return (f"{reference.path.name} (k={k}, {s['mesh']['unknowns']} unknowns, "
+            f"{s['configuration']['time']['integrator']}) {where}")
+
+
+# ---- running -------------------------------------------------------------------------------
+
+def completed(run_dir, overrides):
+    try:
+        stamp = json.loads((run_dir / "run.json").read_text())
+        status = json.loads((run_dir / "summary.json").read_text())["status"]
+    except (OSError, ValueError, KeyError):
+        return None
+    if stamp.get("overrides") != overrides:
+        return None
+    return status
+
+
+class Pool:
+    """Runs `biphasic run` jobs side by side, one core each, with progress and ETA."""
+
+    def __init__(self, jobs, total):
+        self.jobs, self.total = jobs, total
+        self.running = {}  # pid -> (proc, label, start, on_done, log)
+        self.done = 0
+        self.walls = []
+        self.t0 = time.time()
+
+    def start(self, cmd, run_dir, label, on_done):
+        while len(self.running) >= self.jobs:
+            self.wait_one()
+        run_dir.mkdir(parents=True, exist_ok=True)
+        log = open(run_dir / "log.txt", "w")
+        env = dict(os.environ, OMP_NUM_THREADS=str(max(1, (os.cpu_count() or 2) // self.jobs)),
+                   OPENBLAS_NUM_THREADS="1" if self.jobs > 1 else os.environ.get(
+                       "OPENBLAS_NUM_THREADS", ""))
+        if not env["OPENBLAS_NUM_THREADS"]:
+            del env["OPENBLAS_NUM_THREADS"]
+        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env)
+        self.running[proc.pid] = (proc, label, time.time(), on_done, log)
+
+    def wait_one(self):
+        pid, status, usage = os.wait4(-1, 0)
+        if pid not in self.running:
+            return
+        proc, label, start, on_done, log = self.running.pop(pid)
+        log.close()
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        wall = time.time() - start
+        self.walls.append(wall)
+        self.done += 1
+        on_done(proc.returncode, usage.ru_maxrss / 1024 / 1024)
+        left = self.total - self.done - len(self.running)
+        mean = sum(self.walls) / len(self.walls)
+        eta = mean * (left + len(self.running) / 2) / self.jobs
+        state = "ok" if proc.returncode == 0 else f"FAILED (exit {proc.returncode})"
+        print(f"[{self.done}/{self.total} done, {len(self.running)} running, {left} left, "
+              f"ETA {eta / 60:.1f} min] {label}: {state} in {wall:.1f} s", flush=True)
+
+    def drain(self):
+        while self.running:
+            self.wait_one()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("study", type=pathlib.Path)
+    ap.add_argument("-o", "--output", type=pathlib.Path, default=None)
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--dry-run", action="store_true", help="list the runs and stop")
+    ap.add_argument("--retry-failed", action="store_true", help="rerun runs that failed before")
+    args = ap.parse_args()
+    try:
+        study, base, runs, reference = load_study(args.study.resolve())
+    except StudyError as e:
+        sys.exit(f"study: {e}")
+    name = args.study.stem
+    out = args.output or pathlib.Path(study.get("output", ROOT / "results" / "studies" / name))
+    out = out if out.is_absolute() else (ROOT / out)
+    if not BIN.is_file():
+        sys.exit(f"study: {BIN} not found; build first (tools/build.sh)")
+    print(f"study {name}: {study.get('title', '')} — {len(runs)} runs into {out}")
+    if args.dry_run:
+        for r in runs:
+            print(f"  {r['dir']}: {' '.join(f'{k}={toml_value(v)}' for k, v in r['overrides'].items())}")
+        return
+    try:
+        validate(base, runs)
+        if reference:
+            validate(reference, [{"dir": "reference", "overrides": reference_overrides(r, base, reference)[1]}
+                                 for r in runs[:1]])
+    except StudyError as e:
+        sys.exit(f"study {args.study}: {e}")
+
+    # References first (each once; cached across studies).
+    refs = {}
+    todo_refs = []
+    if reference:
+        for r in runs:
+            physical, overrides = reference_overrides(r, base, reference)
+            key = reference_key(reference, physical)
+            r["reference_key"] = key
+            if key in refs:
+                continue
+            ref_dir = REFERENCE_CACHE / key
+            refs[key] = (ref_dir, physical)
+            if completed(ref_dir, overrides) != "completed":
+                todo_refs.append((key, ref_dir, overrides))
+
+    todo = [r for r in runs
+            if completed(out / "runs" / r["dir"], r["overrides"]) not in
+            (("completed",) if args.retry_failed else ("completed", "failed"))]
+    print(f"{len(runs) - len(todo)} runs already done; {len(todo)} to run"
+          + (f", {len(todo_refs)} reference solutions to compute first" if todo_refs else ""),
+          flush=True)
+
+    def stamp(run_dir, overrides):
+        def on_done(code, peak_gb):
+            (run_dir / "run.json").write_text(json.dumps(
+                {"overrides": overrides, "exit_code": code, "peak_rss_gb": round(peak_gb, 4)},
+                indent=1))
+        return on_done
+
+    if todo_refs:
+        pool = Pool(args.jobs, len(todo_refs))
+        for key, ref_dir, overrides in todo_refs:
+            if ref_dir.exists():
+                shutil.rmtree(ref_dir)
+            cmd = [str(BIN), "run", str(reference.path), "-o", str(ref_dir)] + \
+                set_args(overrides)
+            pool.start(cmd, ref_dir, f"reference {key}", stamp(ref_dir, overrides))
+        pool.drain()
+
+    pool = Pool(args.jobs, len(todo))
+    for r in todo:
+        run_dir = out / "runs" / r["dir"]
+        if run_dir.exists():
+            shutil.rmtree(run_dir)
+        cmd = [str(BIN), "run", str(base.path), "-o", str(run_dir)] + \
+            set_args(r["overrides"])
+        pool.start(cmd, run_dir, r["dir"], stamp(run_dir, r["overrides"]))
+    pool.drain()
+
+    rows = []
+    for r in runs:
+        run_dir = out / "runs" / r["dir"]
+        info = None
+        if reference and r.get("reference_key"):
+            ref_dir, physical = refs[r["reference_key"]]
+            if (ref_dir / "summary.json").is_file():
+                info = (ref_dir, reference_label(reference, physical, ref_dir))
+        try:
+            peak = json.loads((run_dir / "run.json").read_text()).get("peak_rss_gb")
+            rows.append(row_for(r, run_dir, name, info, peak))
+        except (OSError, ValueError, KeyError) as e:
+            rows.append({"study": name, "sweep": r["sweep"], "run": r["dir"], "status": "missing",
+                         **{f"param:{k}": v for k, v in r["params"].items()}})
+            print(f"  {r['dir']}: no results ({e})", file=sys.stderr)
+    columns = []
+    for row in rows:
+        for k in row:
+            if k not in columns:
+                columns.append(k)
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "runs.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        for row in rows:
+            w.writerow({k: ("" if row.get(k) is None else row.get(k)) for k in columns})
+    failed = [row["run"] for row in rows if row.get("status") != "completed"]
+    print(f"table: {out / 'runs.csv'} ({len(rows)} rows"
+          + (f"; not completed: {', '.join(failed)}" if failed else "") + ")")
+    if failed:
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
