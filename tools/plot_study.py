@@ -14,6 +14,7 @@ Each writes PNG files into OUT_DIR and prints their names.
 """
 import argparse
 import csv
+import json
 import math
 import pathlib
 
@@ -187,24 +188,24 @@ def sensitivity(rows, out):
                        f"(osc. {num(r, 'oscillation_max'):.2f})",
                        f"variable-order BDF, t = 32 s, {'GLS' if stab == 'gls' else 'no GLS'}")
     save(fig, out, "sensitivity_time_step.png")
-    # Early times: where the oscillation lives.
-    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    # The overshoot over time: where (and when) the oscillation lives.
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
     for ax, stab in zip(axes, ("none", "gls")):
-        for r in sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt")):
-            if num(r, "dt") > 8:
-                continue
-            z, p, _ = line_at(r["_dir"], 6.4)
-            ax.plot(z, [v * 1e3 for v in p], ".-", ms=3, label=f"BE dt = {num(r, 'dt'):g} s")
-        for r in select(rows, sweep="bdf_rtol", stabilisation=stab):
-            if math.isclose(num(r, "bdf_rtol"), 1e-4):
-                z, p, _ = line_at(r["_dir"], 6.4)
-                ax.plot(z, [v * 1e3 for v in p], "k-", lw=1.5, label="BDF rtol 1e-4")
-        ax.set_xlim(0, 2)
-        ax.set_xlabel("z [mm] (bottom fifth of the axis)"), ax.set_ylabel("pressure [kPa]")
-        ax.set_title(f"t = 6.4 s near the drained bottom, {'GLS' if stab == 'gls' else 'no GLS'}",
+        runs = sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt"))
+        runs += sorted(select(rows, sweep="bdf_rtol", stabilisation=stab), key=lambda r: -num(r, "bdf_rtol"))
+        for r in runs:
+            outs = [o for o in json.loads((r["_dir"] / "summary.json").read_text())["outputs"]
+                    if o["t"] > 0 and o.get("overshoot") is not None]
+            be = r["integrator"] == "backward_euler"
+            ax.plot([o["t"] for o in outs], [100 * o["overshoot"] for o in outs],
+                    "o-" if be else "k--" if math.isclose(num(r, "bdf_rtol"), 1e-4) else ":",
+                    ms=3, lw=1, label=(f"BE dt = {num(r, 'dt'):g} s" if be
+                                       else f"BDF rtol {num(r, 'bdf_rtol'):g}"))
+        ax.set_xlabel("t [s]"), ax.set_ylabel("overshoot on the axis [%]")
+        ax.set_title(f"overshoot over time, mesh 2, k = 1e-3, {'GLS' if stab == 'gls' else 'no GLS'}",
                      fontsize=9)
         ax.grid(alpha=0.3), ax.legend(fontsize=7)
-    save(fig, out, "sensitivity_early_time.png")
+    save(fig, out, "sensitivity_overshoot_over_time.png")
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
     for ax, integ in zip(axes, ("be_rate", "bdf_rate")):
         for stab, style in (("none", "-"), ("gls", "--")):
@@ -222,24 +223,30 @@ def sensitivity(rows, out):
 
 
 def work(rows, out):
+    groups = {}
+    for r in rows:
+        if r.get("status") != "completed":
+            continue
+        integ = "BE" if r["integrator"] == "backward_euler" else "BDF"
+        groups.setdefault((mesh_label(r), integ, r["stabilisation"]), []).append(r)
     for xkey, xlabel, name in (("wall_s", "wall time [s]", "work_precision_wall.png"),
                                ("factorizations", "factorisations", "work_precision_factorisations.png")):
-        fig, ax = plt.subplots(figsize=(7, 5))
-        groups = {}
-        for r in rows:
-            if r.get("status") != "completed":
-                continue
-            integ = "BE" if r["integrator"] == "backward_euler" else "BDF"
-            groups.setdefault((mesh_label(r), integ, r["stabilisation"]), []).append(r)
-        for (mesh, integ, stab), rs in sorted(groups.items()):
-            rs.sort(key=lambda r: num(r, xkey))
-            ax.loglog([num(r, xkey) for r in rs], [100 * num(r, "discrepancy") for r in rs],
-                      ("o-" if integ == "BE" else "s--"), ms=4,
-                      label=f"{mesh}, {integ}, {'GLS' if stab == 'gls' else 'no GLS'}")
-        ax.axhline(1.0, color="grey", lw=0.8)
-        ax.set_xlabel(xlabel), ax.set_ylabel("discrepancy at t = 32 s [%]")
-        ax.set_title("work-precision, k = 1e-3 (BE over dt, BDF over rtol)", fontsize=9)
-        ax.grid(alpha=0.3, which="both"), ax.legend(fontsize=7)
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+        for ax, ykey, ylabel in ((axes[0], "discrepancy", "discrepancy at t = 32 s [%]"),
+                                 (axes[1], "midheight_error", "mid-height error at t = 32 s [%]")):
+            for (mesh, integ, stab), rs in sorted(groups.items()):
+                # Along each curve the method's own parameter: BE from large to small dt,
+                # BDF from loose to tight rtol.
+                rs = sorted(rs, key=lambda r: -num(r, "dt") if integ == "BE" else -num(r, "bdf_rtol"))
+                ax.loglog([num(r, xkey) for r in rs], [100 * num(r, ykey) for r in rs],
+                          ("o-" if integ == "BE" else "s--"), ms=4,
+                          label=f"{mesh}, {integ}, {'GLS' if stab == 'gls' else 'no GLS'}")
+            ax.axhline(1.0, color="grey", lw=0.8)
+            ax.set_xlabel(xlabel), ax.set_ylabel(ylabel)
+            ax.grid(alpha=0.3, which="both")
+        axes[0].legend(fontsize=7)
+        fig.suptitle("work-precision, k = 1e-3 (BE over dt from 32 s to 0.4 s, BDF over rtol "
+                     "from 1e-2 to 1e-5)", fontsize=9)
         save(fig, out, name)
 
 
@@ -301,7 +308,7 @@ def remedies(rows, out):
     }
     for (label, rs), style in zip(series.items(), ("o-", "s-", "^-")):
         rs = [r for r in rs if r.get("status") == "completed"]
-        rs.sort(key=lambda r: num(r, "wall_s"))
+        rs.sort(key=lambda r: num(r, "unknowns"))
         ax.loglog([num(r, "wall_s") for r in rs], [100 * num(r, "discrepancy") for r in rs], style,
                   label=label)
         for r in rs:
