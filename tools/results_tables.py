@@ -144,8 +144,15 @@ def generic(root, study, title):
 
 def references(root):
     cache = pathlib.Path(root).parent / "references"
+    used = set()  # the references the studies' tables name (the cache may hold stale ones)
+    for table_path in pathlib.Path(root).glob("*/runs.csv"):
+        for r in csv.DictReader(open(table_path)):
+            if r.get("reference"):
+                used.add(pathlib.Path(r["reference"].split()[-1]).name)
     lines = []
     for d in sorted(cache.glob("*/summary.json")):
+        if d.parent.name not in used:
+            continue
         s = json.loads(d.read_text())
         c = s["configuration"]
         if s.get("status") != "completed":

@@ -3,16 +3,16 @@
 # skipped, reference solutions cached in results/references/), then draws every figure into
 # docs/figures/results/ and the tables of docs/results.md (tools/results_tables.py).
 # usage: tools/run_studies.sh [SET]
-#   SET = main (default; about 45 minutes on 2 cores from scratch): time_step, work_precision,
-#         remedies, paper_figures, stability_map_mesh1..3
-#   SET = all: main + paper_figures_mesh4 and stability_map_mesh4 (about 1 hour more)
+#   SET = main (default; about 70 minutes on 2 cores from scratch): time_step, work_precision,
+#         remedies, paper_figures, stability_map_mesh1..3, reference_check (each under 20 minutes)
+#   SET = all: main + paper_figures_mesh4 (≈10 min) and stability_map_mesh4 (≈45 min)
 #   SET = plots: only redraw figures and tables from the runs already done
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 set_name=${1:-main}
 py=/usr/bin/python3
 studies=(time_step work_precision remedies paper_figures stability_map_mesh1 stability_map_mesh2
-         stability_map_mesh3)
+         stability_map_mesh3 reference_check)
 [[ $set_name == all ]] && studies+=(paper_figures_mesh4 stability_map_mesh4)
 if [[ $set_name != plots ]]; then
   "$root/tools/build.sh"
