@@ -253,46 +253,35 @@ def work(rows, out):
 def stability(rows, out):
     meshes = sorted({mesh_label(r) for r in rows})
     for stab in ("none", "gls"):
-        fig, axes = plt.subplots(1, len(meshes), figsize=(4.3 * len(meshes), 3.8), squeeze=False)
+        fig, axes = plt.subplots(1, len(meshes), figsize=(4.6 * len(meshes), 4.2), squeeze=False)
+        sc = None
         for ax, mesh in zip(axes[0], meshes):
             sel = [r for r in rows if mesh_label(r) == mesh and r["stabilisation"] == stab
                    and r.get("status") == "completed"]
             if not sel:
                 continue
-            ks = sorted({num(r, "permeability") for r in sel})
-            dts = sorted({num(r, "dt") for r in sel})
-            grid = [[math.nan] * len(dts) for _ in ks]
-            for r in sel:
-                grid[ks.index(num(r, "permeability"))][dts.index(num(r, "dt"))] = 100 * num(r, "overshoot")
-            im = ax.imshow(grid, origin="lower", cmap="magma_r", vmin=0, vmax=40, aspect="auto")
-            for i in range(len(ks)):
-                for j in range(len(dts)):
-                    ax.text(j, i, f"{grid[i][j]:.0f}", ha="center", va="center", fontsize=7,
-                            color="white" if grid[i][j] > 20 else "black")
-            ax.set_xticks(range(len(dts)), [f"{d:g}" for d in dts])
-            ax.set_yticks(range(len(ks)), [f"{k:g}" for k in ks])
-            ax.set_xlabel("dt [s]"), ax.set_ylabel("k [mm^4/(N s)]")
-            # c dt / h^2 = 1/6 with c = k (lambda + 2 mu): k = h^2 / (6 (lambda + 2 mu) dt),
-            # drawn in index coordinates (log-interpolated between the ticks).
+            dts = [num(r, "dt") for r in sel]
+            ks = [num(r, "permeability") for r in sel]
+            over = [100 * num(r, "overshoot") for r in sel]
+            sc = ax.scatter(dts, ks, c=over, s=420, marker="s", cmap="magma_r", vmin=0, vmax=15,
+                            edgecolors="grey", linewidths=0.5)
+            for d, k, o in zip(dts, ks, over):
+                ax.text(d, k, f"{o:.0f}", ha="center", va="center", fontsize=7,
+                        color="white" if o > 9 else "black")
+            ax.set_xscale("log"), ax.set_yscale("log")
+            ax.set_xlim(min(dts) / 1.8, max(dts) * 1.8), ax.set_ylim(min(ks) / 1.8, max(ks) * 1.8)
+            # c dt / h^2 = 1/6 with c = k (lambda + 2 mu): k = h^2 / (6 (lambda + 2 mu) dt).
             h, m = num(sel[0], "h_line"), num(sel[0], "lambda") + 2 * num(sel[0], "mu")
-
-            def index_of(v, axis):
-                lv = [math.log(a) for a in axis]
-                x = math.log(v)
-                if x <= lv[0]:
-                    return (x - lv[0]) / (lv[1] - lv[0])
-                for i in range(1, len(lv)):
-                    if x <= lv[i]:
-                        return i - 1 + (x - lv[i - 1]) / (lv[i] - lv[i - 1])
-                return len(lv) - 1 + (x - lv[-1]) / (lv[-1] - lv[-2])
-            xs = [dts[0] * (dts[-1] / dts[0]) ** (s / 50) for s in range(51)]
-            ax.plot([index_of(d, dts) for d in xs], [index_of(h * h / (6 * m * d), ks) for d in xs],
-                    "c-", lw=2, label="c dt / h^2 = 1/6")
-            ax.set_ylim(-0.5, len(ks) - 0.5), ax.set_xlim(-0.5, len(dts) - 0.5)
-            ax.set_title(f"{mesh} (h = {h:.2f} mm), {'GLS' if stab == 'gls' else 'no GLS'}: "
-                         "first-step overshoot [%]", fontsize=8)
-            ax.legend(fontsize=7, loc="lower right")
-        fig.colorbar(im, ax=axes[0].tolist(), shrink=0.8)
+            xs = [min(dts) / 1.8 * (max(dts) / min(dts) * 3.24) ** (i / 50) for i in range(51)]
+            ax.plot(xs, [h * h / (6 * m * d) for d in xs], "c-", lw=2, label="c Δt / h² = 1/6")
+            ax.set_xlabel("Δt [s]"), ax.set_ylabel("k [mm⁴/(N s)]")
+            ax.set_title(f"{mesh} (h = {h:.2f} mm on the axis)", fontsize=9)
+            ax.legend(fontsize=7, loc="lower left")
+        fig.suptitle(f"first backward-Euler step: overshoot [%], {'GLS' if stab == 'gls' else 'no GLS'}",
+                     fontsize=10)
+        fig.tight_layout()
+        if sc is not None:
+            fig.colorbar(sc, ax=axes[0].tolist(), shrink=0.85, label="overshoot [%]")
         path = pathlib.Path(out) / f"stability_map_{stab}.png"
         fig.savefig(path, dpi=110)
         plt.close(fig)
