@@ -5,7 +5,7 @@
 # usage: tools/run_studies.sh [SET]
 #   SET = main (default; about 70 minutes on 2 cores from scratch): time_step, work_precision,
 #         remedies, paper_figures, stability_map_mesh1..3, reference_check (each under 20 minutes)
-#   SET = all: main + paper_figures_mesh4 (≈10 min) and stability_map_mesh4 (≈45 min)
+#   SET = all: main + paper_figures_mesh4 (≈10 min) and stability_map_mesh4 (≈20 min)
 #   SET = plots: only redraw figures and tables from the runs already done
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
