@@ -253,9 +253,14 @@ def work(rows, out):
 def stability(rows, out):
     meshes = sorted({mesh_label(r) for r in rows})
     for stab in ("none", "gls"):
-        fig, axes = plt.subplots(1, len(meshes), figsize=(4.6 * len(meshes), 4.2), squeeze=False)
+        cols = min(len(meshes), 2)
+        nrows = (len(meshes) + cols - 1) // cols
+        fig, axes = plt.subplots(nrows, cols, figsize=(5.2 * cols, 4.2 * nrows), squeeze=False)
+        flat = [a for row in axes for a in row]
+        for ax in flat[len(meshes):]:
+            ax.set_visible(False)
         sc = None
-        for ax, mesh in zip(axes[0], meshes):
+        for ax, mesh in zip(flat, meshes):
             sel = [r for r in rows if mesh_label(r) == mesh and r["stabilisation"] == stab
                    and r.get("status") == "completed"]
             if not sel:
@@ -281,7 +286,7 @@ def stability(rows, out):
                      fontsize=10)
         fig.tight_layout()
         if sc is not None:
-            fig.colorbar(sc, ax=axes[0].tolist(), shrink=0.85, label="overshoot [%]")
+            fig.colorbar(sc, ax=flat, shrink=0.85, label="overshoot [%]")
         path = pathlib.Path(out) / f"stability_map_{stab}.png"
         fig.savefig(path, dpi=110)
         plt.close(fig)
