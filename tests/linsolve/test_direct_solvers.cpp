@@ -56,34 +56,20 @@ double componentwise_backward_error(SUNMatrix A, N_Vector x, N_Vector b) {
 }
 
 TEST_P(DirectSolver, SolvesAssembledSystem) {
-  const Mesh mesh = test::solver_box_mesh();
-  const Config cfg = test::solver_box_config(Stabilisation::Gls);
-  BiphasicProblem problem(mesh, cfg);
-  const Index n = problem.size();
-  std::vector<double> y(n, 0.0), ydot(n, 0.0);
-  SUNContext ctx;
-  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
-  SUNMatrix A = problem.pattern().new_matrix(ctx);
-  problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
-
+  test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
   LinearSolverStats stats;
-  LinearSolverPtr ls = make_linear_solver(GetParam().config(), ctx, &stats);
-  N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx), r = N_VNew_Serial(n, ctx);
-  std::vector<double> exact = test::random_unknowns(n);
-  N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
-  ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
+  LinearSolverPtr ls = make_linear_solver(GetParam().config(), sys.ctx, &stats);
   for (int round = 0; round < 2; ++round) {
     ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
-    ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
-    ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
-    double err = 0.0;
-    for (Index i = 0; i < n; ++i) err = std::max(err, std::abs(NV_Ith_S(x, i) - exact[i]));
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+    const double err = sys.max_error();
     if (GetParam().precision == FactorPrecision::Double) {
       EXPECT_LT(err, 1e-8) << "round " << round;
     } else {
       // Refined to a componentwise backward error of 1e-6; the forward error is at most the
       // condition number times that.
-      EXPECT_LE(componentwise_backward_error(A, x, b), 1e-6) << "round " << round;
+      EXPECT_LE(componentwise_backward_error(sys.A, sys.x, sys.b), 1e-6) << "round " << round;
       EXPECT_LT(err, 1e-4) << "round " << round;
     }
   }
@@ -94,10 +80,6 @@ TEST_P(DirectSolver, SolvesAssembledSystem) {
     EXPECT_EQ(stats.refactorizations, 1);
   }
   EXPECT_GT(stats.fill, 1.0);
-  for (N_Vector v : {x, b, r, xe}) N_VDestroy(v);
-  SUNMatDestroy(A);
-  ls.reset();
-  SUNContext_Free(&ctx);
 }
 
 const SolverChoice kChoices[] = {
@@ -118,51 +100,33 @@ INSTANTIATE_TEST_SUITE_P(All, DirectSolver, ::testing::ValuesIn(kChoices),
 // finds its single-precision factorisation singular, falls back to double-precision factors
 // for four factorisations, then tries single precision again; it solves to round-off.
 TEST(MumpsMixedPrecision, FallsBackToDoubleWhenSinglePrecisionFails) {
-  const Mesh mesh = test::solver_box_mesh();
-  const Config cfg = test::solver_box_config(Stabilisation::Gls);
-  BiphasicProblem problem(mesh, cfg);
-  const Index n = problem.size();
-  std::vector<double> y(n, 0.0), ydot(n, 0.0);
-  SUNContext ctx;
-  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
-  SUNMatrix A = problem.pattern().new_matrix(ctx);
-  problem.jacobian(0.0, y.data(), ydot.data(), 1.0 / 6.4, SUNSparseMatrix_Data(A));
-  const sunindextype* Ap = SUNSparseMatrix_IndexPointers(A);
-  const sunindextype* Ai = SUNSparseMatrix_IndexValues(A);
-  double* a = SUNSparseMatrix_Data(A);
+  test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
+  const Index n = sys.problem.size();
+  const sunindextype* Ap = SUNSparseMatrix_IndexPointers(sys.A);
+  const sunindextype* Ai = SUNSparseMatrix_IndexValues(sys.A);
+  double* a = SUNSparseMatrix_Data(sys.A);
   for (sunindextype j = 0; j < n; ++j)
     for (sunindextype q = Ap[j]; q < Ap[j + 1]; ++q)
-      if (Ai[q] >= problem.num_u()) a[q] *= 1e-50;
+      if (Ai[q] >= sys.problem.num_u()) a[q] *= 1e-50;
+  sys.update_rhs();
 
   LinearSolverStats stats;
   LinearSolverPtr ls = make_linear_solver(
-      SolverChoice{LinearSolverType::Mumps, Ordering::Metis, FactorPrecision::Mixed}.config(), ctx,
-      &stats);
-  N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx);
-  std::vector<double> exact = test::random_unknowns(n);
-  N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
-  ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
+      SolverChoice{LinearSolverType::Mumps, Ordering::Metis, FactorPrecision::Mixed}.config(),
+      sys.ctx, &stats);
   ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
-  ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
-  ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
-  double err = 0.0;
-  for (Index i = 0; i < n; ++i) err = std::max(err, std::abs(NV_Ith_S(x, i) - exact[i]));
-  EXPECT_LT(err, 1e-8);
+  ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+  ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+  EXPECT_LT(sys.max_error(), 1e-8);
   EXPECT_EQ(stats.precision_fallbacks, 1);
   // The fallback lasts four factorisations (this one and three more); the fifth tries single
   // precision again and falls back again.
-  for (int k = 0; k < 3; ++k) ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
+  for (int k = 0; k < 3; ++k) ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
   EXPECT_EQ(stats.precision_fallbacks, 1);
-  ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
+  ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
   EXPECT_EQ(stats.precision_fallbacks, 2);
-  ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
-  err = 0.0;
-  for (Index i = 0; i < n; ++i) err = std::max(err, std::abs(NV_Ith_S(x, i) - exact[i]));
-  EXPECT_LT(err, 1e-8);
-  for (N_Vector v : {x, b, xe}) N_VDestroy(v);
-  SUNMatDestroy(A);
-  ls.reset();
-  SUNContext_Free(&ctx);
+  ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+  EXPECT_LT(sys.max_error(), 1e-8);
 }
 
 // The reference loading (k = 1e-3, GLS, 5 steps) on a coarse quarter cylinder: the pressure

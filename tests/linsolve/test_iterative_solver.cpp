@@ -6,7 +6,6 @@
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/paper_scene.hpp"
@@ -19,29 +18,18 @@ namespace {
 class IterativeSolver : public ::testing::TestWithParam<Stabilisation> {};
 
 TEST_P(IterativeSolver, SolvesAssembledSystem) {
-  const Mesh mesh = test::solver_box_mesh();
-  const Config cfg = test::solver_box_config(GetParam());
-  BiphasicProblem problem(mesh, cfg);
-  const Index n = problem.size();
   const double cj = 1.0 / 6.4;
-  std::vector<double> y(n, 0.0), ydot(n, 0.0);
-  SUNContext ctx;
-  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
-  SUNMatrix A = problem.pattern().new_matrix(ctx);
-  problem.jacobian(0.0, y.data(), ydot.data(), cj, SUNSparseMatrix_Data(A));
-
+  test::BoxSystem sys(GetParam(), cj);
+  const BiphasicProblem& problem = sys.problem;
+  const Index n = problem.size();
   LinearSolverStats stats;
   LinearSolverConfig config;
   config.type = LinearSolverType::Iterative;
   config.krylov.rtol = 1e-11;  // a random solution mixes the fields' scales arbitrarily
-  const SaddlePointStructure saddle = problem.saddle_point_structure([cj] {
+  const SaddlePointStructure saddle = sys.problem.saddle_point_structure([cj] {
     return std::pair{cj, cj};
   });
-  LinearSolverPtr ls = make_linear_solver(config, ctx, &stats, {}, &saddle);
-  N_Vector x = N_VNew_Serial(n, ctx), b = N_VNew_Serial(n, ctx);
-  std::vector<double> exact = test::random_unknowns(n);
-  N_Vector xe = N_VMake_Serial(n, exact.data(), ctx);
-  ASSERT_EQ(SUNMatMatvec(A, xe, b), 0);
+  LinearSolverPtr ls = make_linear_solver(config, sys.ctx, &stats, {}, &saddle);
   // max |v_i| over the displacement (u) or pressure (p) unknowns
   auto field_max = [&](bool u, auto&& v) {
     double m = 0.0;
@@ -49,13 +37,13 @@ TEST_P(IterativeSolver, SolvesAssembledSystem) {
       m = std::max(m, std::abs(v(i)));
     return m;
   };
-  auto exact_at = [&](Index i) { return exact[i]; };
+  auto exact_at = [&](Index i) { return sys.exact[i]; };
   const double scale_u = field_max(true, exact_at), scale_p = field_max(false, exact_at);
   for (int round = 0; round < 2; ++round) {
     ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
-    ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
-    ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
-    auto error_at = [&](Index i) { return NV_Ith_S(x, i) - exact[i]; };
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+    auto error_at = [&](Index i) { return NV_Ith_S(sys.x, i) - sys.exact[i]; };
     const double err_u = field_max(true, error_at), err_p = field_max(false, error_at);
     EXPECT_LT(err_u, 1e-6 * scale_u) << "round " << round;
     EXPECT_LT(err_p, 1e-6 * scale_p) << "round " << round;
@@ -65,10 +53,6 @@ TEST_P(IterativeSolver, SolvesAssembledSystem) {
   EXPECT_EQ(stats.solves, 2);
   EXPECT_GT(stats.krylov_iterations, 0);
   EXPECT_GT(stats.amg_cycles, 0);
-  for (N_Vector v : {x, b, xe}) N_VDestroy(v);
-  SUNMatDestroy(A);
-  ls.reset();
-  SUNContext_Free(&ctx);
 }
 
 std::string stabilisation_name(const ::testing::TestParamInfo<Stabilisation>& p) {
