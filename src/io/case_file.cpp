@@ -665,8 +665,23 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
         std::string("applies only to ") + rule.owner + ", not to mesh.source = " + source);
   }
 
-  // A swept quarter cylinder is graded by its layers, not by the unstructured size field, and
-  // needs enough layers for that grading.
+  // Too few layers for a grading toward one face (2) or both (3): generate_column's rule, which
+  // column_layer_z applies to the column and to the swept quarter cylinder alike.
+  auto check_graded_layers = [&](const char* layers_key, int layers, const char* faces_key,
+                                 const std::vector<std::string>& faces, const char* ratio_key,
+                                 double ratio) {
+    if (problems.is_bad(layers_key) || problems.is_bad(faces_key) || problems.is_bad(ratio_key) ||
+        ratio <= 1.0 || faces.empty())
+      return;
+    const int needed = faces.size() == 2 ? 3 : 2;
+    if (layers < needed) {
+      problems.bad_value(layers_key, std::to_string(layers),
+                         "must be >= " + std::to_string(needed) + " to grade the layers toward " +
+                             format_value(faces));
+    }
+  };
+
+  // A swept quarter cylinder is graded by its layers, not by the unstructured size field.
   const QuarterCylinderSpec& cylinder = config.mesh.cylinder;
   if (config.mesh.source == S::QuarterCylinder && !problems.is_bad("mesh.layers")) {
     if (cylinder.layers > 0 && !cylinder.grading_faces.empty()) {
@@ -677,27 +692,16 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
       problems.bad_value("mesh.layer_grading_faces", format_value(cylinder.layer_grading_faces),
                          "needs a swept mesh (mesh.layers > 0)");
     }
-    const int needed = cylinder.layer_grading_faces.size() == 2 ? 3 : 2;
-    if (cylinder.layers > 0 && cylinder.layer_grading_ratio > 1.0 &&
-        !cylinder.layer_grading_faces.empty() && cylinder.layers < needed) {
-      problems.bad_value("mesh.layers", std::to_string(cylinder.layers),
-                         "must be >= " + std::to_string(needed) + " to grade the layers toward " +
-                             format_value(cylinder.layer_grading_faces));
+    if (cylinder.layers > 0) {
+      check_graded_layers("mesh.layers", cylinder.layers, "mesh.layer_grading_faces",
+                          cylinder.layer_grading_faces, "mesh.layer_grading_ratio",
+                          cylinder.layer_grading_ratio);
     }
   }
-
-  // The column needs enough layers for its grading (generate_column's rule).
   const ColumnSpec& column = config.mesh.column;
-  if (config.mesh.source == S::Column && !problems.is_bad("mesh.column.nz") &&
-      !problems.is_bad("mesh.column.grading_faces") &&
-      !problems.is_bad("mesh.column.grading_ratio") && column.grading_ratio > 1.0 &&
-      !column.grading_faces.empty()) {
-    const int needed = column.grading_faces.size() == 2 ? 3 : 2;
-    if (column.nz < needed) {
-      problems.bad_value("mesh.column.nz", std::to_string(column.nz),
-                         "must be >= " + std::to_string(needed) + " to grade the layers toward " +
-                             format_value(column.grading_faces));
-    }
+  if (config.mesh.source == S::Column) {
+    check_graded_layers("mesh.column.nz", column.nz, "mesh.column.grading_faces",
+                        column.grading_faces, "mesh.column.grading_ratio", column.grading_ratio);
   }
 }
 
