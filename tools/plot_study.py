@@ -98,13 +98,12 @@ def mesh_label(row):
 
 
 def pressure_panel(ax, runs, label_of, title, with_reference=True):
-    ref_drawn = False
     for r in runs:
         z, p, _ = line_at(r["_dir"])
         ax.plot(z, [v * 1e3 for v in p], marker=".", ms=3, lw=1, label=label_of(r))
     if with_reference and runs:
         ref = reference_dir(runs[0])
-        if ref and (ref / "line.csv").is_file() and not ref_drawn:
+        if ref and (ref / "line.csv").is_file():
             z, p, _ = line_at(ref, num(runs[0], "t_end"))
             ax.plot(z, [v * 1e3 for v in p], "k--", lw=1, label="reference")
     ax.set_xlabel("z on the axis [mm]")

@@ -30,6 +30,7 @@ BIPHASIC_REFERENCE_CACHE=DIR puts the cache elsewhere). BIPHASIC_BIN=PATH runs a
 """
 import argparse
 import csv
+import functools
 import hashlib
 import itertools
 import json
@@ -209,8 +210,10 @@ def validate(base, runs):
 
 # ---- measures ------------------------------------------------------------------------------
 
+@functools.lru_cache(maxsize=None)
 def read_line(path):
-    """{t: (s list, p list)} from a line.csv."""
+    """{t: (z list, p list)} from a line.csv (cached: a reference serves many runs; callers do
+    not modify the result)."""
     out = {}
     with open(path) as f:
         for row in csv.DictReader(f):
@@ -381,11 +384,9 @@ class Pool:
             self.wait_one()
         run_dir.mkdir(parents=True, exist_ok=True)
         log = open(run_dir / "log.txt", "w")
-        env = dict(os.environ, OMP_NUM_THREADS=str(max(1, (os.cpu_count() or 2) // self.jobs)),
-                   OPENBLAS_NUM_THREADS="1" if self.jobs > 1 else os.environ.get(
-                       "OPENBLAS_NUM_THREADS", ""))
-        if not env["OPENBLAS_NUM_THREADS"]:
-            del env["OPENBLAS_NUM_THREADS"]
+        env = dict(os.environ, OMP_NUM_THREADS=str(max(1, (os.cpu_count() or 2) // self.jobs)))
+        if self.jobs > 1:
+            env["OPENBLAS_NUM_THREADS"] = "1"
         proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env=env)
         self.running[proc.pid] = (proc, label, time.time(), on_done, log)
 
