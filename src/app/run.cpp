@@ -20,6 +20,7 @@
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
+#include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/measures.hpp"
@@ -79,12 +80,21 @@ class ReactionCsv {
 
 }  // namespace
 
-Mesh build_mesh(const Config& config, const std::string& output_dir) {
+Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_cache) {
   auto in_output_dir = [&](std::string path) {
     if (!path.empty() && fs::path(path).is_relative())
       path = (fs::path(output_dir) / path).string();
     return path;
   };
+  // Generated meshes: from the cache unless a .msh file of the generated mesh is asked for.
+  auto generated = [&](const auto& spec, const auto& generate) {
+    if (!spec.write_msh.empty()) return generate(spec);
+    CachedMesh cached =
+        cached_mesh(mesh_cache_directory(), mesh_description(spec), [&] { return generate(spec); });
+    if (from_cache) *from_cache = cached.from_cache;
+    return std::move(cached.mesh);
+  };
+  if (from_cache) *from_cache = false;
   switch (config.mesh.source) {
     case MeshSource::File:
       return read_gmsh(config.mesh.file);
@@ -93,14 +103,14 @@ Mesh build_mesh(const Config& config, const std::string& output_dir) {
     case MeshSource::SphereOctant: {
       SphereOctantSpec spec = config.mesh.sphere_octant;
       spec.write_msh = in_output_dir(config.mesh.cylinder.write_msh);
-      return generate_sphere_octant(spec);
+      return generated(spec, generate_sphere_octant);
     }
     case MeshSource::QuarterCylinder:
       break;
   }
   QuarterCylinderSpec spec = config.mesh.cylinder;
   spec.write_msh = in_output_dir(spec.write_msh);
-  return generate_quarter_cylinder(spec);
+  return generated(spec, generate_quarter_cylinder);
 }
 
 std::string dependency_versions() {
@@ -136,7 +146,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
       (config.title.empty() ? config.case_file : config.title));
   auto t0 = Clock::now();
-  const Mesh mesh = build_mesh(config, out_dir.string());
+  bool mesh_from_cache = false;
+  const Mesh mesh = build_mesh(config, out_dir.string(), &mesh_from_cache);
   const double mesh_seconds = seconds_since(t0);
   check_boundaries(config, mesh.boundary_names());
 
@@ -157,7 +168,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     std::ostringstream s;
     s << "mesh: " << mesh.num_nodes() << " nodes (" << mesh.num_vertices << " vertices), "
       << mesh.tets.size() << " tetrahedra, " << problem.size() << " unknowns, "
-      << problem.pattern().nnz() << " Jacobian nonzeros (" << mesh_seconds << " s)";
+      << problem.pattern().nnz() << " Jacobian nonzeros (" << mesh_seconds << " s"
+      << (mesh_from_cache ? ", from the mesh cache" : "") << ")";
     say(s.str());
   }
   if (config.linear_solver.type == LinearSolverType::Iterative &&

@@ -15,8 +15,11 @@ struct RunOptions {
 };
 
 /// The mesh the configuration describes (generated or read); a relative mesh.write_msh is
-/// written into `output_dir`. Throws std::runtime_error on failure.
-Mesh build_mesh(const Config& config, const std::string& output_dir);
+/// written into `output_dir`. Generated quarter cylinders and sphere octants come from the mesh
+/// cache (mesh_cache_directory()) when an earlier run made them and no .msh file is asked
+/// for; `from_cache`, if given, tells whether this one did. Throws std::runtime_error on
+/// failure.
+Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_cache = nullptr);
 
 /// Runs the case, writing into options.output_dir as the run goes:
 ///   line.csv      pressure and displacement on the probe line at each output time

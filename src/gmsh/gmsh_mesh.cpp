@@ -1,5 +1,5 @@
-// Meshes from gmsh: the generated quarter cylinder, .msh files (formats 2.2 and 4.1), and the
-// gmsh meshing shared by the generators (generator_support.hpp).
+// Meshes from gmsh (inside the gmsh module): the generated quarter cylinder, .msh files (formats
+// 2.2 and 4.1), and the gmsh meshing shared by the generators (gmsh_meshing.hpp).
 #include <gmsh.h>
 
 #include <algorithm>
@@ -25,7 +25,7 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
-#include "generator_support.hpp"
+#include "gmsh_meshing.hpp"
 
 namespace biphasic {
 
@@ -40,9 +40,7 @@ constexpr int kGmshTet10 = 11;
 // Our local node k of a 10-node tet is gmsh's local node kFromGmshTet10[k].
 constexpr std::array<int, 10> kFromGmshTet10{0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
 
-// Face names of the quarter cylinder, in the order their boundaries are stored.
-constexpr std::array<const char*, 5> kCylinderFaces{"bottom", "top", "lateral", "symmetry_x",
-                                                    "symmetry_y"};
+using detail::kCylinderFaces;
 
 std::mutex& gmsh_mutex() {
   static std::mutex mutex;
@@ -387,28 +385,6 @@ void check_single_order(const std::set<int>& types) {
   }
 }
 
-void validate(const QuarterCylinderSpec& spec) {
-  detail::require_positive("radius", spec.radius);
-  detail::require_positive("height", spec.height);
-  detail::require_positive("lc", spec.lc);
-  detail::require_at_least_one("grading_ratio", spec.grading_ratio);
-  if (!spec.grading_faces.empty()) {
-    detail::require_positive("grading_distance", spec.grading_distance);
-  }
-  detail::require_known_faces(spec.grading_faces, kCylinderFaces);
-  if (spec.layers < 0) {
-    throw std::runtime_error("layers = " + std::to_string(spec.layers) + " must be >= 0");
-  }
-  if (spec.layers > 0 && !spec.grading_faces.empty()) {
-    throw std::runtime_error(
-        "grading_faces (unstructured grading) and layers > 0 (a swept mesh) "
-        "exclude each other; grade a swept mesh with layer_grading_faces");
-  }
-  if (spec.layers == 0 && !spec.layer_grading_faces.empty()) {
-    throw std::runtime_error("layer_grading_faces needs layers > 0");
-  }
-}
-
 /// The z of the layer interfaces of a swept quarter cylinder (column_layer_z's grading).
 std::vector<double> cylinder_layer_z(const QuarterCylinderSpec& spec) {
   ColumnSpec column;
@@ -535,11 +511,8 @@ void add_physical_groups(int volume, std::span<const int> surfaces,
   gmsh::model::setPhysicalName(3, 1, "domain");
 }
 
-}  // namespace detail
-
-Mesh generate_quarter_cylinder(const QuarterCylinderSpec& spec) {
+Mesh gmsh_quarter_cylinder(const QuarterCylinderSpec& spec) {
   return detail::with_context("generate_quarter_cylinder", [&] {
-    validate(spec);
     const detail::GmshSizing sizing{spec.lc, spec.grading_ratio, spec.grading_distance,
                                     std::max(spec.radius * std::numbers::pi / 2, spec.height)};
     const std::vector<double> layer_z =
@@ -581,7 +554,7 @@ Mesh generate_quarter_cylinder(const QuarterCylinderSpec& spec) {
   });
 }
 
-Mesh read_gmsh(const std::string& path) {
+Mesh gmsh_read(const std::string& path) {
   return detail::with_context("read_gmsh: '" + path + "'", [&] {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw std::runtime_error("file does not exist");
@@ -595,5 +568,7 @@ Mesh read_gmsh(const std::string& path) {
     return extract_current_model();
   });
 }
+
+}  // namespace detail
 
 }  // namespace biphasic

@@ -13,22 +13,13 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
-#include "generator_support.hpp"
+#include "gmsh_meshing.hpp"
 
 namespace biphasic {
 
 namespace {
 
-// Face names of the octant, in the order their boundaries are stored.
-constexpr std::array<const char*, 4> kOctantFaces{"surface", "symmetry_x", "symmetry_y",
-                                                  "symmetry_z"};
-
-void validate(const SphereOctantSpec& spec) {
-  detail::require_positive("radius", spec.radius);
-  detail::require_positive("lc", spec.lc);
-  detail::require_at_least_one("grading_ratio", spec.grading_ratio);
-  detail::require_positive("grading_distance", spec.grading_distance);
-}
+using detail::kOctantFaces;
 
 // Surface tags of the octant, indexed like kOctantFaces. A symmetry face (a quarter disc) has
 // its centre of mass in its own plane and 4R/(3π) from the other two; the spherical face has
@@ -47,9 +38,8 @@ std::vector<int> classify_octant_faces(double radius) {
 
 }  // namespace
 
-Mesh generate_sphere_octant(const SphereOctantSpec& spec) {
+Mesh detail::gmsh_sphere_octant(const SphereOctantSpec& spec) {
   return detail::with_context("generate_sphere_octant", [&] {
-    validate(spec);
     const double quarter_circle = spec.radius * std::numbers::pi / 2;
     const detail::GmshSizing sizing{spec.lc, spec.grading_ratio, spec.grading_distance,
                                     quarter_circle};
