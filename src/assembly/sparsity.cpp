@@ -55,6 +55,12 @@ SparsityPattern::SparsityPattern(const Mesh& mesh)
     for (int c = 0; c < 3; ++c) fill_column(3 * n + c, n);
   for (Index v = 0; v < num_vertices_; ++v) fill_column(3 * num_nodes_ + v, v);
 
+  edge_ends_.resize(static_cast<std::size_t>(num_nodes_ - num_vertices_));
+  for (const Tet10& t : mesh.tets)
+    for (std::size_t k = 0; k < kTetEdges.size(); ++k)
+      edge_ends_[static_cast<std::size_t>(t[4 + k] - num_vertices_)] = {t[kTetEdges[k][0]],
+                                                                        t[kTetEdges[k][1]]};
+
   local_pos_.resize(mesh.tets.size());
   for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
     const Tet10& t = mesh.tets[e];
@@ -108,26 +114,34 @@ void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatr
 }
 
 std::vector<Index> SparsityPattern::nested_dissection_order() const {
-  std::vector<idx_t> xadj(static_cast<std::size_t>(num_nodes_) + 1, 0), adjncy;
-  adjncy.reserve(adj_.size());
-  for (Index n = 0; n < num_nodes_; ++n) {
-    for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1]; ++q)
-      if (adj_[q] != n) adjncy.push_back(static_cast<idx_t>(adj_[q]));
-    xadj[n + 1] = static_cast<idx_t>(adjncy.size());
+  // Vertex graph: the vertices among each vertex's node neighbours (they sort first).
+  std::vector<idx_t> xadj(static_cast<std::size_t>(num_vertices_) + 1, 0), adjncy;
+  for (Index v = 0; v < num_vertices_; ++v) {
+    for (Index q = adj_ptr_[v]; q < adj_ptr_[v + 1] && adj_[q] < num_vertices_; ++q)
+      if (adj_[q] != v) adjncy.push_back(static_cast<idx_t>(adj_[q]));
+    xadj[v + 1] = static_cast<idx_t>(adjncy.size());
   }
-  std::vector<idx_t> perm(static_cast<std::size_t>(num_nodes_)),
-      iperm(static_cast<std::size_t>(num_nodes_));
-  idx_t nv = static_cast<idx_t>(num_nodes_);
+  std::vector<idx_t> perm(static_cast<std::size_t>(num_vertices_)),
+      iperm(static_cast<std::size_t>(num_vertices_));
+  idx_t nv = static_cast<idx_t>(num_vertices_);
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  if (num_nodes_ > 1 && METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options, perm.data(),
-                                     iperm.data()) != METIS_OK)
-    throw std::runtime_error("METIS_NodeND failed on the node graph");
-  if (num_nodes_ == 1) perm[0] = 0;
+  if (num_vertices_ > 1 && METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options,
+                                        perm.data(), iperm.data()) != METIS_OK)
+    throw std::runtime_error("METIS_NodeND failed on the vertex graph");
+  if (num_vertices_ == 1) iperm[0] = 0;
+  // Sort key: vertex at position k → 2k; an edge node → 2k + 1 with k the earlier position of
+  // its ends (ties by node number, for a deterministic order).
+  std::vector<std::pair<Index, Index>> keyed(static_cast<std::size_t>(num_nodes_));
+  for (Index v = 0; v < num_vertices_; ++v) keyed[v] = {2 * Index{iperm[v]}, v};
+  for (Index n = num_vertices_; n < num_nodes_; ++n) {
+    const auto [a, b] = edge_ends_[static_cast<std::size_t>(n - num_vertices_)];
+    keyed[n] = {2 * Index{std::min(iperm[a], iperm[b])} + 1, n};
+  }
+  std::sort(keyed.begin(), keyed.end());
   std::vector<Index> order;
   order.reserve(static_cast<std::size_t>(num_dofs_));
-  for (idx_t k = 0; k < nv; ++k) {
-    const Index n = perm[k];
+  for (const auto& [key, n] : keyed) {
     for (int c = 0; c < 3; ++c) order.push_back(u_dof(n, c));
     if (n < num_vertices_) order.push_back(p_dof(n));
   }
