@@ -4,6 +4,8 @@
 // whichever solver is chosen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -95,6 +97,51 @@ const SolverChoice kChoices[] = {
 
 INSTANTIATE_TEST_SUITE_P(All, DirectSolver, ::testing::ValuesIn(kChoices),
                          [](const auto& param_info) { return choice_name(param_info.param); });
+
+// Rows with a diagonal entry only (the box's Dirichlet rows) leave MUMPS's factorisation: the
+// solution is unchanged, and a later matrix in which such a row is coupled is analysed again.
+TEST(MumpsDecoupledRows, SameSolutionAndAnalysedAgainWhenARowIsCoupledLater) {
+  for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed}) {
+    test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
+    const Index n = sys.problem.size();
+    const sunindextype* Ap = SUNSparseMatrix_IndexPointers(sys.A);
+    const sunindextype* Ai = SUNSparseMatrix_IndexValues(sys.A);
+    double* a = SUNSparseMatrix_Data(sys.A);
+    // A decoupled row (only its diagonal is non-zero) and an off-diagonal entry in it.
+    std::vector<int> nonzeros(static_cast<std::size_t>(n), 0);
+    for (sunindextype q = 0; q < Ap[n]; ++q)
+      if (a[q] != 0.0) ++nonzeros[static_cast<std::size_t>(Ai[q])];
+    const auto decoupled = std::count(nonzeros.begin(), nonzeros.end(), 1);
+    ASSERT_GT(decoupled, 10) << "the box has Dirichlet rows";
+    sunindextype coupled_entry = -1;
+    for (sunindextype j = 0; j < n && coupled_entry < 0; ++j)
+      for (sunindextype q = Ap[j]; q < Ap[j + 1]; ++q)
+        if (Ai[q] != j && nonzeros[static_cast<std::size_t>(Ai[q])] == 1) {
+          coupled_entry = q;
+          break;
+        }
+    ASSERT_GE(coupled_entry, 0);
+
+    LinearSolverStats stats;
+    LinearSolverPtr ls = make_linear_solver(
+        SolverChoice{LinearSolverType::Mumps, Ordering::Metis, precision}.config(), sys.ctx,
+        &stats);
+    const double tolerance = precision == FactorPrecision::Double ? 1e-8 : 1e-4;
+    ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+    EXPECT_LT(sys.max_error(), tolerance);
+    EXPECT_EQ(stats.analyses, 1);
+
+    // Couple the row and solve the new system: analysed again, still exact.
+    a[coupled_entry] = 0.5 * a[coupled_entry - 1] + 0.25;
+    sys.update_rhs();
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+    EXPECT_LT(sys.max_error(), tolerance) << to_string(precision);
+    EXPECT_EQ(stats.analyses, 2) << to_string(precision);
+  }
+}
 
 // Pressure rows scaled by 1e-50 vanish in single precision: the mixed-precision MUMPS solver
 // finds its single-precision factorisation singular, falls back to double-precision factors
