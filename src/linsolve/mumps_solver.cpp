@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "biphasic/assembly/threads.hpp"
 #include "direct_solver.hpp"
 
 namespace biphasic {
@@ -250,7 +251,9 @@ double backward_error(SUNMatrix A, const double* b, const double* x, std::vector
   // Columns [0, middle) to the first thread, the rest to the second: equal shares of entries.
   const sunindextype middle =
       static_cast<sunindextype>(std::upper_bound(Ap, Ap + n + 1, Ap[n] / 2) - Ap - 1);
-  const bool two = Ap[n] > 100000;  // below this a second thread costs more than it saves
+  // Below ~1e5 entries a second thread costs more than it saves.
+  static const bool two_threads = worker_threads() >= 2;
+  const bool two = two_threads && Ap[n] > 100000;
   double omega = 0.0;
 #pragma omp parallel num_threads(two ? 2 : 1)
   {

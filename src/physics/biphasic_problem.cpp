@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "biphasic/assembly/colouring.hpp"
+#include "biphasic/assembly/threads.hpp"
 #include "biphasic/fe/tet_geometry.hpp"
 #include "biphasic/physics/boundary_integrals.hpp"
 
@@ -22,15 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Threads for assembly: OMP_NUM_THREADS if set, else every processor. (gmsh sets the OpenMP
-/// default to its own General.NumThreads, so the runtime's default cannot be trusted here.)
-int assembly_threads() {
-  if (const char* env = std::getenv("OMP_NUM_THREADS")) {
-    const int n = std::atoi(env);
-    if (n > 0) return n;
-  }
-  return omp_get_num_procs();
-}
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -387,7 +379,7 @@ template <class Work>
 void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, const double* ydot,
                                        Work&& work) {
   std::string failure;
-  static const int threads = assembly_threads();
+  static const int threads = worker_threads();
   for (const std::vector<Index>& colour : colours_) {
     const auto count = static_cast<std::ptrdiff_t>(colour.size());
 #pragma omp parallel num_threads(threads)
@@ -413,7 +405,7 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
   // Each thread adds its share of the elements into its own vector; the vectors are summed
   // into F. Two barriers per residual, where the coloured loop of the Jacobian needs one per
   // colour.
-  static const int threads = assembly_threads();
+  static const int threads = worker_threads();
   const auto n = static_cast<std::ptrdiff_t>(size());
   const auto num_elements = static_cast<std::ptrdiff_t>(mesh_.tets.size());
   thread_residuals_.resize(static_cast<std::size_t>(threads));
