@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -19,8 +20,10 @@ struct Result {
   std::string output;  // stdout and stderr
 };
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
+/// Runs the binary with `args`; `env` ("NAME=value ...") is set for the command only.
+Result run(const std::string& args, const std::string& env = "") {
+  const std::string cmd =
+      (env.empty() ? "" : "env " + env + " ") + std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
   Result r{-1, ""};
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -104,6 +107,50 @@ TEST(Cli, BadOverrideIsReported) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("time.dt"), std::string::npos) << r.output;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A generated mesh is cached by the first run and read back by the second (without gmsh), with
+// the same results to the last digit.
+TEST(Cli, SecondRunTakesTheMeshFromTheCache) {
+  const fs::path file = write_case("cached.toml", std::string(kValid) + R"([time]
+dt = 6.4
+t_end = 6.4
+[output]
+fields = false
+)");
+  const fs::path cache = file.parent_path() / "mesh_cache";
+  fs::remove_all(cache);
+  const std::string env = "BIPHASIC_MESH_CACHE=" + cache.string();
+  const Result first =
+      run("run " + file.string() + " -o " + (file.parent_path() / "first").string(), env);
+  ASSERT_EQ(first.status, 0) << first.output;
+  EXPECT_EQ(first.output.find("from the mesh cache"), std::string::npos) << first.output;
+  // The second run must not load gmsh at all (the dynamic loader's log names every library
+  // it opens).
+  const Result second =
+      run("run " + file.string() + " -o " + (file.parent_path() / "second").string(),
+          env + " LD_DEBUG=files");
+  ASSERT_EQ(second.status, 0) << second.output;
+  EXPECT_NE(second.output.find("from the mesh cache"), std::string::npos) << second.output;
+  EXPECT_EQ(second.output.find("libgmsh"), std::string::npos) << "gmsh was loaded";
+  EXPECT_NE(second.output.find("libsundials"), std::string::npos) << "no loader log";
+  EXPECT_EQ(read_text(file.parent_path() / "first" / "line.csv"),
+            read_text(file.parent_path() / "second" / "line.csv"));
+  fs::remove_all(cache);
+}
+
+TEST(Cli, MissingGmshModuleIsNamed) {
+  const fs::path file = write_case("nomodule.toml", kValid);
+  const Result r =
+      run("run " + file.string() + " -o " + (file.parent_path() / "nomodule").string(),
+          "BIPHASIC_MESH_CACHE=off BIPHASIC_GMSH_MODULE=/nonexistent/libbiphasic_gmsh.so");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("/nonexistent/libbiphasic_gmsh.so"), std::string::npos) << r.output;
 }
 
 TEST(Cli, UnknownOptionAndMissingCase) {
