@@ -1,6 +1,7 @@
 // Mesh cache: a stored mesh comes back bit for bit; anything that does not match (another
 // description, a damaged or truncated file) is regenerated; the key covers every spec field.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -32,8 +33,7 @@ class MeshCache : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("biphasic_mesh_cache_" +
-            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+           ("biphasic_mesh_cache_" + std::to_string(getpid()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     biphasic::ColumnSpec spec;
@@ -181,7 +181,8 @@ TEST(MeshCacheDescription, CoversEveryFieldThatShapesTheMeshButNotTheMshFile) {
 }
 
 TEST(MeshCacheGenerated, CachedQuarterCylinderEqualsAFreshOne) {
-  const fs::path dir = fs::temp_directory_path() / "biphasic_mesh_cache_generated";
+  const fs::path dir =
+      fs::temp_directory_path() / ("biphasic_mesh_cache_generated_" + std::to_string(getpid()));
   fs::remove_all(dir);
   biphasic::QuarterCylinderSpec spec;
   spec.lc = 4.0;
