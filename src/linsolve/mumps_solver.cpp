@@ -91,20 +91,19 @@ class MumpsInstance {
   /// is coupled now); false if MUMPS fails.
   bool factorise(SUNMatrix A, LinearSolverStats& stats) {
     const double* a = SUNSparseMatrix_Data(A);
-    if (analysed_ && !still_decoupled(a)) analysed_ = false;
-    if (!analysed_) {
-      plan(A, analysed_once_);  // the second time round: no decoupled rows
-      set_values(a);
+    const bool analyse = !analysed_ || !still_decoupled(a);
+    if (analyse) plan(A, analysed_);  // the second time round: no decoupled rows
+    set_values(a);
+    if (analyse) {
       const auto t0 = Clock::now();
       id_.job = 1;
       P::call(&id_);
       stats.analysis_seconds += seconds_since(t0);
       ++stats.analyses;
       if (infog(1) < 0) return false;
-      analysed_ = analysed_once_ = true;
+      analysed_ = true;
     }
     const auto t0 = Clock::now();
-    set_values(a);
     for (Coupling& c : coupling_) c.value = a[c.position];
     for (std::size_t k = 0; k < decoupled_.size(); ++k) diagonal_[k] = a[decoupled_diagonal_[k]];
     id_.job = 2;
@@ -222,7 +221,7 @@ class MumpsInstance {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
   typename P::Struc id_{};
-  bool analysed_ = false, analysed_once_ = false;
+  bool analysed_ = false;
   std::vector<MUMPS_INT> irn_, jcn_;  ///< 1-based coordinates of the kept entries
   std::vector<sunindextype> kept_;    ///< positions in A's values of the entries MUMPS gets
   std::vector<MUMPS_INT> perm_in_;    ///< position of each unknown in the caller's order
@@ -232,13 +231,18 @@ class MumpsInstance {
   std::vector<Real> values_, rhs_;            ///< MUMPS' copy of the kept values; right-hand side
 };
 
-/// Componentwise backward error of x as a solution of A x = b (Oettli–Prager):
-/// max_i |r_i| / (|A| |x| + |b|)_i with r = b − A x, which it stores. The product streams the
-/// whole matrix (a sixth of a mixed-precision solve on mesh 1): two threads share the columns,
-/// the second accumulating into `r2` and `scale2`, which are then added in.
-double backward_error(SUNMatrix A, const double* b, const double* x, std::vector<double>& r,
-                      std::vector<double>& scale, std::vector<double>& r2,
-                      std::vector<double>& scale2) {
+/// How far x is from solving A x = b.
+struct SolutionError {
+  double backward;      ///< componentwise backward error max_i |r_i| / (|A| |x| + |b|)_i
+  double residual_max;  ///< max_i |r_i|
+};
+
+/// The error of x as a solution of A x = b, r = b − A x (Oettli–Prager), storing r. The
+/// product streams the whole matrix (a sixth of a mixed-precision solve on mesh 1): two threads
+/// share the columns, the second accumulating into `r2` and `scale2`, which are then added in.
+SolutionError solution_error(SUNMatrix A, const double* b, const double* x, std::vector<double>& r,
+                             std::vector<double>& scale, std::vector<double>& r2,
+                             std::vector<double>& scale2) {
   const sunindextype n = SUNSparseMatrix_Columns(A);
   const sunindextype* Ap = SUNSparseMatrix_IndexPointers(A);
   const sunindextype* Ai = SUNSparseMatrix_IndexValues(A);
@@ -254,7 +258,7 @@ double backward_error(SUNMatrix A, const double* b, const double* x, std::vector
   // Below ~1e5 entries a second thread costs more than it saves.
   static const bool two_threads = worker_threads() >= 2;
   const bool two = two_threads && Ap[n] > 100000;
-  double omega = 0.0;
+  double omega = 0.0, r_max = 0.0;
 #pragma omp parallel num_threads(two ? 2 : 1)
   {
     const bool second = two && omp_get_thread_num() == 1;
@@ -277,16 +281,17 @@ double backward_error(SUNMatrix A, const double* b, const double* x, std::vector
         ss[Ai[q]] += std::abs(t);
       }
 #pragma omp barrier
-#pragma omp for schedule(static) reduction(max : omega)
+#pragma omp for schedule(static) reduction(max : omega, r_max)
     for (sunindextype i = 0; i < n; ++i) {
       if (two) {
         r[i] += r2[i];
         scale[i] += scale2[i];
       }
       if (scale[i] > 0.0) omega = std::max(omega, std::abs(r[i]) / scale[i]);
+      r_max = std::max(r_max, std::abs(r[i]));
     }
   }
-  return omega;
+  return {omega, r_max};
 }
 
 /// MUMPS as a SUNLinearSolver, in double or mixed precision. Mixed: single-precision factors;
@@ -333,27 +338,25 @@ class MumpsSolver final : public detail::DirectSolver {
     if (!single_->solve(b_.data(), xv)) return SUNLS_PACKAGE_FAIL_UNREC;
     double b_max = 0.0;
     for (const double v : b_) b_max = std::max(b_max, std::abs(v));
-    // Accurate enough: componentwise backward error and normwise relative residual both at
-    // most the target. The second matters where |A| |x| ≫ |b| (cancellation, as in IDA's
+    // Accurate enough (≤ 1): componentwise backward error and normwise relative residual
+    // within their targets. The second matters where |A| |x| ≫ |b| (cancellation, as in IDA's
     // first steps with h ~ 1e-12 s): a small backward error then still allows a residual as
     // large as b itself, and Newton would not converge on such corrections.
-    auto error = [&] {
-      const double omega = backward_error(A, b_.data(), xv, r_, scale_, r2_, scale2_);
-      double r_max = 0.0;
-      for (const double v : r_) r_max = std::max(r_max, std::abs(v));
-      const double relative = b_max > 0.0 ? r_max / b_max : 0.0;
-      return std::max(omega, relative * (kTargetBackwardError / kTargetResidual));
+    auto excess = [&] {
+      const SolutionError e = solution_error(A, b_.data(), xv, r_, scale_, r2_, scale2_);
+      const double relative = b_max > 0.0 ? e.residual_max / b_max : 0.0;
+      return std::max(e.backward / kTargetBackwardError, relative / kTargetResidual);
     };
-    double omega = error();
-    for (int k = 0; k < kMaxRefinementSteps && omega > kTargetBackwardError; ++k) {
+    double error = excess();
+    for (int k = 0; k < kMaxRefinementSteps && error > 1.0; ++k) {
       if (!single_->solve(r_.data(), r_.data())) return SUNLS_PACKAGE_FAIL_UNREC;
       for (std::size_t i = 0; i < n; ++i) xv[i] += r_[i];
       ++stats().refinement_steps;
-      const double previous = omega;
-      omega = error();
-      if (omega > 0.5 * previous) break;  // stalled: single precision is not enough here
+      const double previous = error;
+      error = excess();
+      if (error > 0.5 * previous) break;  // stalled: single precision is not enough here
     }
-    if (omega <= kTargetBackwardError) return SUNLS_SUCCESS;
+    if (error <= 1.0) return SUNLS_SUCCESS;
     fall_back_to_double();
     if (!factorise_double(A)) return SUNLS_PACKAGE_FAIL_UNREC;
     return double_->solve(b_.data(), xv) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;
