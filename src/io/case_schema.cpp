@@ -466,8 +466,8 @@ std::vector<Key<Config>> build_global_keys() {
   keys.push_back(choice_key<C>(
       "linear_solver.precision", precision_names(),
       "MUMPS' factors: `mixed` factorises in single precision and refines each solve in double "
-      "precision to a componentwise backward error of 1e-6 (falling back to `double` if that "
-      "fails); `double` factorises in double precision.",
+      "precision to a componentwise backward error of 1e-6 and a relative residual of 1e-4 "
+      "(falling back to `double` if that fails); `double` factorises in double precision.",
       [](auto& c) -> auto& { return c.linear_solver.precision; }));
   keys.push_back(number_key<C>(
       "linear_solver.krylov.rtol", strictly_between(0, 1), "",

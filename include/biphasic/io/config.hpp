@@ -123,8 +123,9 @@ enum class LinearSolverType { Klu, Umfpack, Mumps, Iterative };
 enum class Ordering { Amd, Colamd, Metis };
 /// Arithmetic of MUMPS' factors. Mixed: single-precision LU (half the memory, about twice the
 /// speed), each solve refined in double precision until its componentwise backward error
-/// max_i |b − A x|_i / (|A| |x| + |b|)_i ≤ 1e-6; a factorisation or refinement that fails
-/// falls back to double precision for the rest of the run.
+/// max_i |b − A x|_i / (|A| |x| + |b|)_i ≤ 1e-6 and its relative residual
+/// ‖b − A x‖∞ / ‖b‖∞ ≤ 1e-4; a factorisation or refinement that fails falls back to double
+/// precision for the next few factorisations.
 enum class FactorPrecision { Double, Mixed };
 
 /// Default: MUMPS with METIS ordering, the fastest of the three on the paper's meshes

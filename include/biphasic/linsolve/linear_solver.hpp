@@ -86,7 +86,9 @@ LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSol
 /// MUMPS (sequential build; multifrontal LU, BLAS-3) with AMD or METIS ordering (COLAMD maps
 /// to MUMPS' AMF). Analysis once; a numeric factorisation at each setup. Mixed precision:
 /// single-precision factors, solutions refined in double precision to a componentwise
-/// backward error ≤ 1e-6, falling back to double-precision factors when that fails.
+/// backward error ≤ 1e-6 and a relative residual ≤ 1e-4, falling back to double-precision
+/// factors when that fails. Rows with only a diagonal entry (Dirichlet rows) are solved
+/// directly and kept out of the factorisation.
 LinearSolverPtr make_mumps_solver(Ordering ordering, FactorPrecision precision, SUNContext ctx,
                                   LinearSolverStats* stats, FillOrder order = {});
 
