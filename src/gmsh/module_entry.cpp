@@ -1,7 +1,5 @@
 // The gmsh module's one exported symbol: the table of its meshing functions, which the core
 // loads on first use (src/mesh/gmsh_backend.cpp) so that runs on a cached mesh never load gmsh.
-#include <gmsh.h>
-
 #include "../mesh/gmsh_backend.hpp"
 #include "gmsh_meshing.hpp"
 
@@ -9,6 +7,6 @@ extern "C" __attribute__((visibility("default"))) const biphasic::detail::GmshBa
 biphasic_gmsh_backend() {
   static const biphasic::detail::GmshBackend backend{
       biphasic::detail::GmshBackend::kAbi, &biphasic::detail::gmsh_quarter_cylinder,
-      &biphasic::detail::gmsh_sphere_octant, &biphasic::detail::gmsh_read, GMSH_API_VERSION};
+      &biphasic::detail::gmsh_sphere_octant, &biphasic::detail::gmsh_read};
   return &backend;
 }

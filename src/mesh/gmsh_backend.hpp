@@ -13,12 +13,11 @@ namespace biphasic::detail {
 /// What the module provides (its symbol "biphasic_gmsh_backend" returns a pointer to one).
 struct GmshBackend {
   /// Layout and meaning of this table; bumped whenever either changes.
-  static constexpr int kAbi = 1;
+  static constexpr int kAbi = 2;
   int abi;
   Mesh (*quarter_cylinder)(const QuarterCylinderSpec&);  ///< spec already validated
   Mesh (*sphere_octant)(const SphereOctantSpec&);        ///< spec already validated
   Mesh (*read)(const std::string& path);
-  const char* gmsh_version;  ///< of the gmsh API the module was built against
 };
 
 /// The module, loaded on the first call: from $BIPHASIC_GMSH_MODULE if set, else from where

@@ -89,16 +89,16 @@ class Reader {
     pos_ += size;
     return true;
   }
-  bool get_string(std::string& s) {
-    std::uint64_t n = 0;
-    if (!get(n) || n > size_ - pos_) return false;
-    s.assign(data_ + pos_, n);
-    pos_ += n;
-    return true;
-  }
   /// A count of items of `item_size` bytes each that fit in what is left.
   bool get_count(std::uint64_t& n, std::size_t item_size) {
     return get(n) && n <= (size_ - pos_) / item_size;
+  }
+  bool get_string(std::string& s) {
+    std::uint64_t n = 0;
+    if (!get_count(n, 1)) return false;
+    s.assign(data_ + pos_, n);
+    pos_ += n;
+    return true;
   }
   std::size_t position() const { return pos_; }
 
