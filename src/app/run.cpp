@@ -182,7 +182,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const double ratio =
         c_max / config.time.dt / (config.material.lambda + 2.0 * config.material.mu);
     summary["gls_penalty_ratio"] = ratio;
-    const bool bdf = config.time.integrator == Integrator::Bdf;
+    const bool bdf = uses_ida(config.time.integrator);
     if (ratio > 5.0 || bdf) {
       std::ostringstream s;
       s << "note: the GLS term c_j c_e outweighs the solid's lambda + 2 mu in the displacement "
@@ -256,10 +256,22 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"amg_cycles", ls.amg_cycles},
                            {"refinement_steps", ls.refinement_steps},
                            {"precision_fallbacks", ls.precision_fallbacks},
+                           {"shift_corrected_solves", ls.shift_corrected_solves},
+                           {"shift_correction_iterations", ls.shift_correction_iterations},
+                           {"shift_correction_failures", ls.shift_correction_failures},
                            {"fill_ratio", ls.fill}};
-    if (config.time.integrator == Integrator::Bdf) {
+    if (uses_ida(config.time.integrator)) {
       summary["counters"]["error_test_failures"] = is.error_test_failures;
       summary["counters"]["restarts"] = is.restarts;
+      const auto [atol_u, atol_p] = absolute_tolerances(problem, config.time.bdf);
+      summary["counters"]["absolute_tolerances"] = {{"displacement", atol_u}, {"pressure", atol_p}};
+      nlohmann::json starts = nlohmann::json::array();
+      for (const auto& st : is.starts)
+        starts.push_back({{"t", st.t},
+                          {"residual_u", st.residual_u},
+                          {"residual_p", st.residual_p},
+                          {"pressure_solved", st.pressure_solved}});
+      summary["counters"]["consistent_starts"] = starts;
       summary["counters"]["steps_per_order"] = is.order_counts;
       if (!is.step_sizes.empty()) {
         std::vector<double> h = is.step_sizes;
@@ -321,7 +333,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       last_summary = Clock::now();
     }
     char line[256];
-    if (config.time.integrator == Integrator::Bdf) {
+    if (uses_ida(config.time.integrator)) {
       std::snprintf(line, sizeof line,
                     "output %4d/%d  t %9.4g s  steps %4d  order %d  h %8.3g s  newton %3d  "
                     "|R_u| %.2e N  |R_p| %.2e mm3/s",

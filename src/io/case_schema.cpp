@@ -56,8 +56,10 @@ const Names<ElementLength>& element_length_names() {
 }
 
 const Names<Integrator>& integrator_names() {
-  static const Names<Integrator> names{{"backward_euler", Integrator::BackwardEuler},
-                                       {"bdf", Integrator::Bdf}};
+  static const Names<Integrator> names{
+      {"backward_euler", Integrator::BackwardEuler},
+      {"bdf", Integrator::Bdf},
+      {"adaptive_backward_euler", Integrator::AdaptiveBackwardEuler}};
   return names;
 }
 
@@ -383,8 +385,9 @@ std::vector<Key<Config>> build_global_keys() {
 
   keys.push_back(choice_key<C>(
       "time.integrator", integrator_names(),
-      "Time integrator: backward_euler (fixed time.dt, the paper's) or bdf (SUNDIALS IDA, "
-      "variable order and step; outputs every time.dt).",
+      "Time integrator: backward_euler (fixed time.dt, the paper's), bdf (SUNDIALS IDA, "
+      "variable order and step; outputs every time.dt) or adaptive_backward_euler (IDA held at "
+      "order 1: error-controlled backward Euler with the time.bdf settings).",
       [](auto& c) -> auto& { return c.time.integrator; }));
   keys.push_back(number_key<C>(
       "time.t_end", above(0), "s", "End time of the run (starts at 0).",
@@ -427,16 +430,22 @@ std::vector<Key<Config>> build_global_keys() {
       "time.bdf.rtol", strictly_between(0, 1), "", "Relative tolerance of IDA's local error test.",
       [](auto& c) -> auto& { return c.time.bdf.rtol; }));
   keys.push_back(number_key<C>(
-      "time.bdf.atol_displacement", above(0), "mm", "Absolute tolerance on displacements.",
+      "time.bdf.atol_displacement", at_least(0), "mm",
+      "Absolute tolerance on displacements; 0 = rtol times the largest prescribed displacement "
+      "(or the strain a traction imposes).",
       [](auto& c) -> auto& { return c.time.bdf.atol_displacement; }));
   keys.push_back(number_key<C>(
-      "time.bdf.atol_pressure", above(0), "MPa", "Absolute tolerance on pressures.",
+      "time.bdf.atol_pressure", at_least(0), "MPa",
+      "Absolute tolerance on pressures; 0 = rtol times H_A times the applied strain (or the "
+      "prescribed pressure or traction).",
       [](auto& c) -> auto& { return c.time.bdf.atol_pressure; }));
   keys.push_back(integer_key<C>(
       "time.bdf.max_order", from_to(1, 5), {}, "Maximum BDF order.",
       [](auto& c) -> auto& { return c.time.bdf.max_order; }));
   keys.push_back(number_key<C>(
-      "time.bdf.initial_step", at_least(0), "s", "First step; 0 lets IDA estimate it.",
+      "time.bdf.initial_step", at_least(0), "s",
+      "First step; 0 = 1 % of the first output interval (or of the time to the first load-curve "
+      "kink).",
       [](auto& c) -> auto& { return c.time.bdf.initial_step; }));
   keys.push_back(number_key<C>(
       "time.bdf.max_step", at_least(0), "s", "Largest step; 0 = unlimited.",
@@ -449,6 +458,19 @@ std::vector<Key<Config>> build_global_keys() {
       "time.bdf.delta_cj", strictly_between(0, 1), "",
       "Relative change of c_j = alpha/h that forces a new factorisation (IDASetDeltaCjLSetup).",
       [](auto& c) -> auto& { return c.time.bdf.delta_cj; }));
+  keys.push_back(number_key<C>(
+      "time.bdf.max_growth", above(1), "",
+      "Largest ratio of one step to the previous (IDASetEtaMax).",
+      [](auto& c) -> auto& { return c.time.bdf.max_growth; }));
+  keys.push_back(bool_key<C>(
+      "time.bdf.shift_correction",
+      "Solve each Newton correction with the current c_j on the last factorisation (GMRES "
+      "preconditioned by it) rather than IDA's scaled stale-c_j correction.",
+      [](auto& c) -> auto& { return c.time.bdf.shift_correction; }));
+  keys.push_back(bool_key<C>(
+      "time.bdf.restart_from_last_step",
+      "After a load-curve kink, restart from the last accepted step (else from initial_step).",
+      [](auto& c) -> auto& { return c.time.bdf.restart_from_last_step; }));
   keys.push_back(bool_key<C>(
       "time.bdf.step_log", "Write steps.csv with t, h and order of every internal step.",
       [](auto& c) -> auto& { return c.time.bdf.step_log; }));

@@ -82,6 +82,57 @@ auto central_rate(const Field& f, const Vec3& X, double t) {
   return (f(X, t + h) - f(X, t - h)) / (2.0 * h);
 }
 
+/// Largest |value · curve(t)| over [0, t_end] (curves are piecewise linear: their points
+/// inside the interval and its ends).
+double largest_value(const BoundaryCondition& bc, const std::map<std::string, LoadCurve>& curves,
+                     double t_end) {
+  const double scale = bc.type == BcType::Traction
+                           ? std::sqrt(bc.vector[0] * bc.vector[0] + bc.vector[1] * bc.vector[1] +
+                                       bc.vector[2] * bc.vector[2])
+                           : std::abs(bc.value);
+  auto it = bc.curve.empty() ? curves.end() : curves.find(bc.curve);
+  if (it == curves.end()) return scale;
+  const LoadCurve& c = it->second;
+  double m = std::max(std::abs(c.value(0.0)), std::abs(c.value(t_end)));
+  for (const auto& [t, v] : c.points)
+    if (t >= 0.0 && t <= t_end) m = std::max(m, std::abs(v));
+  return scale * m;
+}
+
+/// The solution's displacement [mm] and pressure [MPa] scales implied by the boundary data.
+std::pair<double, double> data_scales(const Mesh& mesh, const Config& config) {
+  const double HA = config.material.lambda + 2.0 * config.material.mu;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& x : mesh.nodes)
+    for (int c = 0; c < 3; ++c) {
+      lo(c) = std::min(lo(c), x[c]);
+      hi(c) = std::max(hi(c), x[c]);
+    }
+  const Vec3 extent = (hi - lo).cwiseMax(1e-300);
+  double u = 0.0, p = 0.0;
+  for (const BoundaryCondition& bc : config.bcs) {
+    const double v = largest_value(bc, config.curves, config.time.t_end);
+    switch (bc.type) {
+      case BcType::Displacement:
+        u = std::max(u, v);
+        p = std::max(p, HA * v / extent(bc.component));
+        break;
+      case BcType::Pressure:
+        p = std::max(p, v);
+        break;
+      case BcType::Traction:
+      case BcType::NormalTraction:
+        p = std::max(p, v);
+        u = std::max(u, v / HA * extent.maxCoeff());
+        break;
+      case BcType::Symmetry:
+      case BcType::Flux:
+        break;
+    }
+  }
+  return {u, p};
+}
+
 }  // namespace
 
 BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
@@ -220,6 +271,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       }
     }
   }
+  solution_scales_ = data_scales(mesh, config);
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -502,15 +554,25 @@ void BiphasicProblem::time_derivative(double t, double* dFdt) const {
 }
 
 void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot, double cj,
-                               double* values) {
+                               double* values, double* rate_values) {
   const auto t0 = Clock::now();
   std::fill(values, values + pattern_.nnz(), 0.0);
+  if (rate_values) std::fill(rate_values, rate_values + pattern_.nnz(), 0.0);
   for_each_element(true, y, ydot, [&](Index e, const ElementOutput& out) {
     pattern_.scatter(e, mesh_.tets[e], out.dfdy, out.dfdydot, cj, constrained_, values);
+    if (rate_values)
+      pattern_.scatter(e, mesh_.tets[e], out.dfdydot, out.dfdydot, 0.0, constrained_, rate_values);
   });
   for (const Dirichlet& d : dirichlet_) values[pattern_.find(d.dof, d.dof)] = dirichlet_scale(d);
   ++stats_.jacobian_evaluations;
   stats_.jacobian_seconds += seconds_since(t0);
+}
+
+double BiphasicProblem::gls_time_scale() const {
+  double c = 0.0;
+  for (double ce : gls_c_)
+    if (ce > 0.0 && (c == 0.0 || ce < c)) c = ce;
+  return c / oedometric_modulus();
 }
 
 void BiphasicProblem::pressure_schur_term(double cj, double cj_gls,

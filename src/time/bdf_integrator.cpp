@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/consistent_start.hpp"
 
 namespace biphasic {
 
@@ -48,23 +49,16 @@ std::string ida_reason(int flag) {
   }
 }
 
-/// IDA needs consistent initial values: the momentum rows must hold at (t0, y0). A load or a
-/// prescribed displacement that is already nonzero at t0 (a step) leaves them out of balance;
-/// IDA's error test then fails at ever smaller steps. Throws a StepFailure naming the cause and
-/// the remedy when the imbalance exceeds what the displacement tolerance allows.
-void require_initial_equilibrium(BiphasicProblem& problem, double t0, const std::vector<double>& y,
-                                 double atol_displacement) {
-  const std::vector<double> zero(y.size(), 0.0);
-  std::vector<double> F(y.size());
-  problem.residual(t0, y.data(), zero.data(), F.data());
-  const double imbalance = problem.field_norms(F.data()).first;
-  const double allowed = atol_displacement * problem.stiffness_scale();
-  if (imbalance <= allowed) return;
+/// The start must satisfy F(t₀, y₀, ẏ₀) = 0; a momentum residual beyond what the displacement
+/// tolerance allows means a load or prescribed displacement that jumps at t₀ (IDA does not
+/// compute the undrained response to a jump). Throws a StepFailure naming cause and remedy.
+void require_consistent(const ConsistentState& start, double t0, double allowed) {
+  if (start.residual_u <= allowed) return;
   std::ostringstream msg;
   msg << "BDF cannot start at t = " << t0 << " s: the initial state is not in equilibrium "
-      << "(momentum residual " << imbalance << " N, allowed " << allowed
-      << " N = time.bdf.atol_displacement x stiffness): a load or prescribed displacement is "
-      << "already nonzero at t = " << t0
+      << "(momentum residual " << start.residual_u << " N after the consistent start, allowed "
+      << allowed << " N = displacement tolerance x stiffness): a load or prescribed displacement "
+      << "is already nonzero at t = " << t0
       << " s, i.e. it jumps there, and IDA needs consistent initial values (it does not compute "
          "the undrained response to a jump). Ramp the load up from zero over a short time "
          "instead (a curve [[0.0, 0.0], [t_r, 1.0]] with t_r well below the times of interest), "
@@ -73,60 +67,25 @@ void require_initial_equilibrium(BiphasicProblem& problem, double t0, const std:
   throw StepFailure(msg.str());
 }
 
+/// GMRES of the shift-corrected solver: relative residual and iterations per solve. IDA's
+/// Newton iteration needs far less than 1e-8; a solve that needs more than 20 iterations
+/// costs more than a new factorisation would save.
+constexpr double kShiftCorrectionRtol = 1e-4;
+constexpr int kShiftCorrectionIterations = 20;
+
 }  // namespace
 
-std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
-                                    const std::vector<double>& y,
-                                    const LinearSolverConfig& solver) {
-  const Index n = problem.size();
-  const SparsityPattern& pat = problem.pattern();
-  const std::vector<char>& fixed = problem.constrained();
-  std::vector<double> zero(n, 0.0), F0(n), dFdt(n), A0(pat.nnz()), A1(pat.nnz());
-  // ∂F/∂y and ∂F/∂y + ∂F/∂ẏ at ẏ = 0 (F is linear in ẏ apart from the GLS geometry).
-  problem.jacobian(t, y.data(), zero.data(), 0.0, A0.data());
-  problem.jacobian(t, y.data(), zero.data(), 1.0, A1.data());
-  problem.residual(t, y.data(), zero.data(), F0.data());
-  problem.time_derivative(t, dFdt.data());
-
-  SundialsContext sc;
-  SUNMatrix M = pat.new_matrix(sc.ctx);
-  double* values = SUNSparseMatrix_Data(M);
-  std::vector<double> rhs(n);
-  for (Index i = 0; i < n; ++i) {
-    const bool differentiated = i < problem.num_u() || fixed[i];
-    rhs[i] = differentiated ? -dFdt[i] : -F0[i];
-  }
-  const auto& cp = pat.colptr();
-  const auto& ri = pat.rowind();
-  for (Index j = 0; j < n; ++j)
-    for (Index q = cp[j]; q < cp[j + 1]; ++q) {
-      const Index i = ri[q];
-      const bool differentiated = i < problem.num_u() || fixed[i];
-      values[q] = differentiated ? A0[q] : A1[q] - A0[q];
-    }
-  LinearSolverStats stats;
-  // Displacement rows without the c_j-scaled GLS term, pressure rows ∂F/∂ẏ (shift 1).
-  const SaddlePointStructure saddle = problem.saddle_point_structure([] {
-    return std::pair{1.0, 0.0};
-  });
-  // One solve with no Newton iteration after it: factors in double precision, so that ẏ(t0)
-  // is exact to round-off (mixed precision would leave a 1e-6 backward error in it).
-  LinearSolverConfig exact = solver;
-  exact.precision = FactorPrecision::Double;
-  LinearSolverPtr ls = make_linear_solver(exact, sc.ctx, &stats, fill_order(exact, pat), &saddle);
-  N_Vector x = N_VNew_Serial(n, sc.ctx);
-  N_Vector b = N_VMake_Serial(n, rhs.data(), sc.ctx);
-  const int setup = SUNLinSolSetup(ls.get(), M);
-  const int solve = setup == 0 ? SUNLinSolSolve(ls.get(), M, x, b, 0.0) : setup;
-  std::vector<double> ydot(N_VGetArrayPointer(x), N_VGetArrayPointer(x) + n);
-  N_VDestroy(x);
-  N_VDestroy(b);
-  ls.reset();
-  SUNMatDestroy(M);
-  if (solve != 0)
-    throw StepFailure("consistent initial rate at t = " + std::to_string(t) +
-                      " s: the linear solve failed (flag " + std::to_string(solve) + ")");
-  return ydot;
+std::pair<double, double> absolute_tolerances(const BiphasicProblem& problem,
+                                              const BdfConfig& bdf) {
+  const auto [u_scale, p_scale] = problem.solution_scales();
+  // Without data to scale by (a run driven by body forces alone, say): the former fixed values.
+  const double au = bdf.atol_displacement > 0.0 ? bdf.atol_displacement
+                    : u_scale > 0.0             ? bdf.rtol * u_scale
+                                                : 1e-8;
+  const double ap = bdf.atol_pressure > 0.0 ? bdf.atol_pressure
+                    : p_scale > 0.0         ? bdf.rtol * p_scale
+                                            : 1e-10;
+  return {au, ap};
 }
 
 struct BdfIntegrator::Impl {
@@ -141,6 +100,9 @@ struct BdfIntegrator::Impl {
   LinearSolverPtr ls;
   std::string failure;
   double cj = 1.0;  ///< shift of the last Jacobian [1/s]
+  /// ∂F/∂ẏ and c_j of the last Jacobian, for the shift-corrected solver.
+  ShiftedMatrixFamily family;
+  bool shift_correction = false;
 
   Impl(BiphasicProblem& p, const TimeConfig& tc, const LinearSolverConfig& lc, std::string log)
       : problem(p), time(tc), solver(lc), step_log_path(std::move(log)) {}
@@ -161,6 +123,9 @@ struct BdfIntegrator::Impl {
     } catch (const InvertedElement& e) {
       self->failure = e.what();
       return 1;  // recoverable: IDA reduces the step
+    } catch (const std::exception& e) {
+      self->failure = e.what();
+      return -1;  // no exception may cross IDA's C frames
     }
   }
 
@@ -171,11 +136,16 @@ struct BdfIntegrator::Impl {
     self->cj = cj;
     try {
       self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
-                             SUNSparseMatrix_Data(J));
+                             SUNSparseMatrix_Data(J),
+                             self->shift_correction ? self->family.rate_values.data() : nullptr);
+      self->family.setup_shift = cj;
       return 0;
     } catch (const InvertedElement& e) {
       self->failure = e.what();
       return 1;
+    } catch (const std::exception& e) {
+      self->failure = e.what();
+      return -1;
     }
   }
 };
@@ -189,14 +159,31 @@ BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
   m.yp = N_VNew_Serial(n, m.sc.ctx);
   m.tmp = N_VNew_Serial(n, m.sc.ctx);
   m.atol = N_VNew_Serial(n, m.sc.ctx);
+  if (time.integrator == Integrator::AdaptiveBackwardEuler) m.time.bdf.max_order = 1;
+  std::tie(atol_displacement_, atol_pressure_) = absolute_tolerances(problem, m.time.bdf);
   for (Index i = 0; i < n; ++i)
-    NV_Ith_S(m.atol, i) = i < problem.num_u() ? time.bdf.atol_displacement : time.bdf.atol_pressure;
+    NV_Ith_S(m.atol, i) = i < problem.num_u() ? atol_displacement_ : atol_pressure_;
   m.A = problem.pattern().new_matrix(m.sc.ctx);
   const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
     return std::pair{m.cj, m.cj};
   });
-  m.ls = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
-                            fill_order(linear_solver, problem.pattern()), &saddle);
+  LinearSolverPtr inner = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
+                                             fill_order(linear_solver, problem.pattern()), &saddle);
+  // The iterative solver is a Krylov method already; it solves at the matrix it was given.
+  m.shift_correction =
+      time.bdf.shift_correction && linear_solver.type != LinearSolverType::Iterative;
+  if (m.shift_correction) {
+    m.family.rate_values.assign(problem.pattern().nnz(), 0.0);
+    m.family.current_shift = [&m] {
+      realtype cj = 0.0;
+      IDAGetCurrentCj(m.ida, &cj);
+      return cj;
+    };
+    m.ls = make_shift_corrected_solver(std::move(inner), &m.family, m.sc.ctx, &ls_stats_,
+                                       kShiftCorrectionRtol, kShiftCorrectionIterations);
+  } else {
+    m.ls = std::move(inner);
+  }
   stats_.order_counts.assign(5, 0);
 }
 
@@ -241,10 +228,29 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     stats_.error_test_failures += v;
   };
 
-  auto start = [&](double t, const std::vector<double>& ys) {
-    const std::vector<double> yd = consistent_rate(problem, t, ys, m.solver);
-    std::copy(ys.begin(), ys.end(), N_VGetArrayPointer(m.yy));
-    std::copy(yd.begin(), yd.end(), N_VGetArrayPointer(m.yp));
+  // First step: the configured one, else 1 % of the first output interval or of the time to
+  // the first kink, whichever is shorter.
+  auto first_step = [&](double t) {
+    if (bdf.initial_step > 0) return bdf.initial_step;
+    double horizon = std::min(m.time.dt, t_end - t);
+    for (double k : stops)
+      if (k > t + 1e-12 * std::max(1.0, t_end)) {
+        horizon = std::min(horizon, k - t);
+        break;
+      }
+    return 1e-2 * horizon;
+  };
+  const double allowed_imbalance =
+      absolute_tolerances(problem, bdf).first * problem.stiffness_scale();
+  double last_step = 0.0;
+  // IDA from a consistent (y, ẏ) at t: created on the first call, re-initialised after a kink.
+  auto start = [&](double t, std::vector<double>& ys) {
+    ConsistentState cs = consistent_start(problem, t, ys, m.solver, &ls_stats_);
+    stats_.starts.push_back({t, cs.residual_u, cs.residual_p, cs.pressure == PressureRole::Value});
+    if (stats_.starts.size() == 1) require_consistent(cs, t, allowed_imbalance);
+    ys = cs.y;
+    std::copy(cs.y.begin(), cs.y.end(), N_VGetArrayPointer(m.yy));
+    std::copy(cs.ydot.begin(), cs.ydot.end(), N_VGetArrayPointer(m.yp));
     if (!m.ida) {
       m.ida = IDACreate(m.sc.ctx);
       check(IDAInit(m.ida, Impl::residual_fn, t, m.yy, m.yp), "IDAInit");
@@ -252,22 +258,35 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       check(IDASetUserData(m.ida, &m), "IDASetUserData");
       check(IDASetLinearSolver(m.ida, m.ls.get(), m.A), "IDASetLinearSolver");
       check(IDASetJacFn(m.ida, Impl::jacobian_fn), "IDASetJacFn");
+      // The shift-corrected solver returns the exact correction for the current c_j.
+      if (m.shift_correction)
+        check(IDASetLinearSolutionScaling(m.ida, SUNFALSE), "IDASetLinearSolutionScaling");
       check(IDASetMaxOrd(m.ida, bdf.max_order), "IDASetMaxOrd");
       check(IDASetMaxNumSteps(m.ida, bdf.max_steps), "IDASetMaxNumSteps");
       if (bdf.max_step > 0) check(IDASetMaxStep(m.ida, bdf.max_step), "IDASetMaxStep");
       check(IDASetDeltaCjLSetup(m.ida, bdf.delta_cj), "IDASetDeltaCjLSetup");
+      check(IDASetEtaMax(m.ida, bdf.max_growth), "IDASetEtaMax");
       check(IDASetErrHandlerFn(
                 m.ida, [](int, const char*, const char*, char*, void*) {}, nullptr),
             "IDASetErrHandlerFn");
+      check(IDASetInitStep(m.ida, first_step(t)), "IDASetInitStep");
     } else {
       accumulate();
       ++stats_.restarts;
       check(IDAReInit(m.ida, t, m.yy, m.yp), "IDAReInit");
+      double h0 = first_step(t);
+      if (bdf.restart_from_last_step && last_step > 0) {
+        h0 = last_step;
+        for (double k : stops)
+          if (k > t + 1e-12 * std::max(1.0, t_end)) {
+            h0 = std::min(h0, k - t);
+            break;
+          }
+      }
+      check(IDASetInitStep(m.ida, h0), "IDASetInitStep");
     }
-    if (bdf.initial_step > 0) check(IDASetInitStep(m.ida, bdf.initial_step), "IDASetInitStep");
   };
 
-  require_initial_equilibrium(problem, t0, y, bdf.atol_displacement);
   start(t0, y);
   const int outputs = planned_outputs();
   auto output_time = [&](int k) { return k == outputs ? t_end : t0 + k * m.time.dt; };
@@ -299,6 +318,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     IDAGetLastStep(m.ida, &h);
     IDAGetLastOrder(m.ida, &q);
     stats_.step_sizes.push_back(h);
+    last_step = h;
     if (q >= 1 && q <= 5) ++stats_.order_counts[q - 1];
     if (step_log) step_log << tret << ',' << h << ',' << q << '\n';
     // Outputs passed by this step, by IDA's interpolation.
@@ -323,7 +343,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       ++next_output;
     }
     if (flag == IDA_TSTOP_RETURN && stop + 1 < stops.size()) {
-      // A kink of a load curve: restart with the rate consistent after it.
+      // A kink of a load curve: restart from the values consistent after it.
       std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
       start(tret, y);
       ++stop;
@@ -340,6 +360,7 @@ std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, c
     case Integrator::BackwardEuler:
       return std::make_unique<BackwardEuler>(problem, config.time, config.linear_solver);
     case Integrator::Bdf:
+    case Integrator::AdaptiveBackwardEuler:
       return std::make_unique<BdfIntegrator>(
           problem, config.time, config.linear_solver,
           output_dir.empty() ? std::string() : output_dir + "/steps.csv");

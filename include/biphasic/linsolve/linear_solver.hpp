@@ -24,12 +24,24 @@ struct LinearSolverStats {
   double analysis_seconds = 0.0;
   double factor_seconds = 0.0;
   double solve_seconds = 0.0;
-  double fill = 0.0;               ///< nnz(L + U) / nnz(A) of the last factorisation
-  long krylov_iterations = 0;      ///< iterative solver: FGMRES iterations over all solves
-  long max_krylov_iterations = 0;  ///< iterative solver: most FGMRES iterations of one solve
-  long amg_cycles = 0;             ///< iterative solver: AMG V-cycles on the displacement block
-  long refinement_steps = 0;       ///< mixed precision: refinement steps over all solves
-  long precision_fallbacks = 0;    ///< mixed precision: switches to double-precision factors
+  double fill = 0.0;                ///< nnz(L + U) / nnz(A) of the last factorisation
+  long krylov_iterations = 0;       ///< iterative solver: FGMRES iterations over all solves
+  long max_krylov_iterations = 0;   ///< iterative solver: most FGMRES iterations of one solve
+  long amg_cycles = 0;              ///< iterative solver: AMG V-cycles on the displacement block
+  long refinement_steps = 0;        ///< mixed precision: refinement steps over all solves
+  long precision_fallbacks = 0;     ///< mixed precision: switches to double-precision factors
+  long shift_corrected_solves = 0;  ///< solves at a c_j other than the factorised one
+  long shift_correction_iterations = 0;  ///< their GMRES iterations (one old-factor solve each)
+  long shift_correction_failures = 0;    ///< of which did not converge (IDA then refactorises)
+};
+
+/// The matrices A(c) = ∂F/∂y + c ∂F/∂ẏ of a time integrator (c = IDA's c_j), as the
+/// shift-corrected solver sees them. The integrator fills it at every matrix set-up and keeps
+/// it alive as long as the solver.
+struct ShiftedMatrixFamily {
+  std::vector<double> rate_values;        ///< ∂F/∂ẏ at the last set-up (CSC values)
+  double setup_shift = 0.0;               ///< c of the matrix last set up [1/s]
+  std::function<double()> current_shift;  ///< c of the system being solved [1/s]
 };
 
 /// Deleter for SUNLinearSolver handles.
@@ -70,6 +82,18 @@ FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pa
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
                                    LinearSolverStats* stats, FillOrder order = {},
                                    const SaddlePointStructure* saddle = nullptr);
+
+/// Keeps the factors of A(c_s) while c changes: A(c) x = b is solved by GMRES (no restart, at
+/// most `max_iterations`, to a relative residual `rtol` in the row-equilibrated 2-norm) on
+/// A(c) = A(c_s) + (c − c_s) ∂F/∂ẏ, right-preconditioned by `inner`'s factors of A(c_s); at
+/// c = c_s it is `inner`. (IDA's own scaled correction 2/(1 + c/c_s) A(c_s)⁻¹ b, even inside
+/// its default window c/c_s ∈ [0.6, 1/0.6], broke tolerance proportionality at order 3.) A solve
+/// that does not converge reports a recoverable failure (IDA then sets up a new matrix). Type
+/// DIRECT: use with IDASetLinearSolutionScaling(off).
+LinearSolverPtr make_shift_corrected_solver(LinearSolverPtr inner,
+                                            const ShiftedMatrixFamily* family, SUNContext ctx,
+                                            LinearSolverStats* stats, double rtol,
+                                            int max_iterations);
 
 /// KLU (SuiteSparse) with AMD, COLAMD or METIS nested-dissection ordering. Unlike SUNDIALS'
 /// SUNLinSol_KLU, re-initialisation by KINSol/IDAReInit keeps the symbolic analysis; the

@@ -75,8 +75,10 @@ class BiphasicProblem {
   /// ∂F/∂t at fixed (y, ẏ): the rates of the boundary values and loads (right derivatives of
   /// the load curves at t), body force and fluid source included.
   void time_derivative(double t, double* dFdt) const;
-  /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz).
-  void jacobian(double t, const double* y, const double* ydot, double cj, double* values);
+  /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz); if `rate_values` is given,
+  /// dF/dẏ alone into it (same pattern; zero on Dirichlet rows) from the same element pass.
+  void jacobian(double t, const double* y, const double* ydot, double cj, double* values,
+                double* rate_values = nullptr);
   /// The element kernel's output for element e at the global state (for tests).
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;
@@ -109,6 +111,18 @@ class BiphasicProblem {
   /// being set up. The problem must outlive the solver.
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const;
+
+  /// Oedometric modulus H_A = λ + 2μ of the solid [MPa].
+  double oedometric_modulus() const { return params_.material.lambda + 2.0 * params_.material.mu; }
+  bool has_gls() const { return !gls_c_.empty(); }
+  bool has_flux_perturbation() const { return !flux_beta_.empty(); }
+  /// Smallest GLS relaxation time min_e c_e / H_A over the elements [s] (0 without GLS).
+  double gls_time_scale() const;
+  /// Sizes of the solution the data imply over the run [mm], [MPa]: the largest prescribed
+  /// displacement or the traction's strain σ/H_A over the body's extent; the largest prescribed
+  /// pressure, traction, or H_A times a prescribed strain (displacement over the body's
+  /// extent along its component). 0 where the data say nothing.
+  std::pair<double, double> solution_scales() const { return solution_scales_; }
 
   AssemblyStats& stats() { return stats_; }
   /// Stiffness scale H_A · (mean element size) [N/mm]: turns a displacement into a force, e.g.
@@ -178,6 +192,7 @@ class BiphasicProblem {
   /// Displacement rows fixed by each boundary's own displacement and symmetry conditions.
   std::map<std::string, std::vector<Index>> held_rows_;
   std::vector<NodalLoad> nodal_loads_;
+  std::pair<double, double> solution_scales_{0.0, 0.0};
   double row_scale_u_ = 1.0;  ///< Dirichlet row scale on displacement rows [N/mm]
   double row_scale_p_ = 1.0;  ///< Dirichlet row scale on pressure rows [mm³/(s MPa)]
   AssemblyStats stats_;

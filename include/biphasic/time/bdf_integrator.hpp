@@ -1,9 +1,8 @@
 // Variable-order, variable-step BDF (SUNDIALS IDA) on the semidiscrete system F(t, y, ẏ) = 0,
 // GLS included in its Δt-free form, with the same sparse direct solvers as backward Euler.
-// The Jacobian is dF/dy + c_j dF/dẏ in the fixed pattern. The consistent ẏ(0) comes from the
-// differentiated equilibrium (IDACalcIC cannot solve this system); every load-curve kink is a
-// stop time after which IDA restarts from a recomputed consistent ẏ. Outputs every time.dt by
-// IDA's interpolation.
+// The Jacobian is dF/dy + c_j dF/dẏ in the fixed pattern. The start and every restart at a
+// load-curve kink (a stop time) are consistent (consistent_start.hpp; IDACalcIC cannot solve
+// this system). Outputs every time.dt by IDA's interpolation.
 #pragma once
 
 #include <memory>
@@ -13,15 +12,14 @@
 #include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/time/consistent_start.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
 
-/// ẏ with F(t, y, ẏ) = 0 and the momentum rows differentiated in time: the saddle-point system
-///   (∂F_u/∂y) ẏ = −∂F_u/∂t,   (∂F_p/∂ẏ) ẏ = −F_p(t, y, 0),   Dirichlet rows ẏ_i = dḡ_i/dt,
-/// assembled in the problem's pattern and solved with the configured solver.
-std::vector<double> consistent_rate(BiphasicProblem& problem, double t,
-                                    const std::vector<double>& y, const LinearSolverConfig& solver);
+/// IDA's absolute tolerances (displacement [mm], pressure [MPa]): the configured ones, or
+/// where they are 0, rtol times the problem's solution scales.
+std::pair<double, double> absolute_tolerances(const BiphasicProblem& problem, const BdfConfig& bdf);
 
 class BdfIntegrator final : public TimeIntegrator {
  public:
@@ -36,12 +34,17 @@ class BdfIntegrator final : public TimeIntegrator {
   int planned_outputs() const override;
   const IntegratorStats& stats() const override { return stats_; }
   const LinearSolverStats& linear_solver_stats() const override { return ls_stats_; }
+  /// The absolute tolerances in use [mm], [MPa].
+  std::pair<double, double> absolute_tolerances_used() const {
+    return {atol_displacement_, atol_pressure_};
+  }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   IntegratorStats stats_;
   LinearSolverStats ls_stats_;
+  double atol_displacement_ = 0.0, atol_pressure_ = 0.0;
 };
 
 /// The integrator the configuration names.

@@ -34,6 +34,14 @@ struct IntegratorStats {
   long restarts = 0;               ///< BDF: re-initialisations at load-curve kinks
   std::vector<long> order_counts;  ///< BDF: steps taken at order 1..5 (index q − 1)
   std::vector<double> step_sizes;  ///< BDF: every accepted internal step [s]
+  /// BDF: the consistent start at t₀ and at every restart, with ‖F(t, y, ẏ)‖∞ there.
+  struct Start {
+    double t = 0.0;
+    double residual_u = 0.0;       ///< [N]
+    double residual_p = 0.0;       ///< [mm³/s]
+    bool pressure_solved = false;  ///< p was recomputed (GLS: p is algebraic)
+  };
+  std::vector<Start> starts;
 };
 
 /// Called after every accepted step (backward Euler) or output time (BDF) with the solution y
