@@ -470,6 +470,13 @@ std::vector<std::array<double, 3>> BiphasicProblem::reactions(
   return out;
 }
 
+void BiphasicProblem::set_conservative_volume_rate(double dt) {
+  if (!(dt >= 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
+                                " s must be >= 0 and finite");
+  params_.volume_rate_dt = dt;
+}
+
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   assemble(t, y, ydot, F);

@@ -79,6 +79,10 @@ struct StabilisationConfig {
 };
 
 enum class Integrator { BackwardEuler, Bdf };
+/// How backward Euler discretises J̇ (in the mass rows and the GLS term). Incremental:
+/// J F⁻ᵀ:∇₀(u − uₙ)/Δt (the paper's u̇ = Δu/Δt in div v). Conservative: (J − Jₙ)/Δt, so the
+/// discrete fluid volume balance holds exactly. BDF always uses J F⁻ᵀ:∇₀u̇.
+enum class VolumeRate { Incremental, Conservative };
 
 struct NewtonConfig {
   int max_iterations = 25;
@@ -112,6 +116,7 @@ struct TimeConfig {
   Integrator integrator = Integrator::BackwardEuler;
   double t_end = 32.0;  ///< [s]
   double dt = 6.4;      ///< backward Euler step; output interval of BDF [s]
+  VolumeRate volume_rate = VolumeRate::Incremental;  ///< backward Euler only
   NewtonConfig newton;
   BdfConfig bdf;
 };

@@ -61,6 +61,11 @@ class BiphasicProblem {
   void set_dirichlet_fields(VectorField u, ScalarField p, VectorField u_rate = {},
                             ScalarField p_rate = {});
 
+  /// Backward Euler's conservative volume rate: from now on J̇ = (J − Jₙ)/Δt with
+  /// uₙ = u − Δt u̇ in the mass rows and the GLS term (Δt = `dt` [s], the step about to be
+  /// solved); `dt` = 0 restores J̇ = J F⁻ᵀ:∇₀u̇. Throws std::invalid_argument if dt < 0.
+  void set_conservative_volume_rate(double dt);
+
   const Mesh& mesh() const { return mesh_; }
   const SparsityPattern& pattern() const { return pattern_; }
   Index size() const { return pattern_.size(); }
