@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +24,7 @@
 #include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/volume_balance.hpp"
 #include "biphasic/study/measures.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
@@ -214,6 +216,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   summary["steps"] = nlohmann::json::array();
   summary["outputs"] = nlohmann::json::array();
 
+  // Fluid-volume balance (backward Euler only: BDF's observer sees the outputs, not its steps).
+  std::unique_ptr<VolumeBalance> balance;
   std::vector<double> u, p;
   auto split = [&](const std::vector<double>& y) {
     u.assign(y.begin(), y.begin() + problem.num_u());
@@ -233,6 +237,16 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       nlohmann::json r = nlohmann::json::object();
       for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
       o["reactions"] = r;
+    }
+    if (balance) {
+      const VolumeBalanceRecord& vb = balance->record();
+      const double imbalance = vb.relative_imbalance();
+      o["volume_balance"] = {
+          {"volume_change", vb.volume_change},
+          {"outflow_integrated", vb.outflow_integrated},
+          {"source_integrated", vb.source_integrated},
+          {"relative_imbalance",
+           std::isnan(imbalance) ? nlohmann::json(nullptr) : nlohmann::json(imbalance)}};
     }
     summary["outputs"].push_back(o);
     return m;
@@ -296,6 +310,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   std::vector<double> y(problem.size(), 0.0);
   const double t_start = 0.0;
   problem.apply_dirichlet(t_start, y.data(), nullptr);
+  if (config.time.integrator == Integrator::BackwardEuler)
+    balance = std::make_unique<VolumeBalance>(problem, y);
   write_output(t_start, y, std::vector<double>(y.size(), 0.0));
   const int every = std::max(1, config.output.every);
   const int planned =
@@ -315,6 +331,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                        {"residual_u", info.residual_u},
                        {"residual_p", info.residual_p}};
     const bool output_now = info.step % every == 0 || info.step == planned;
+    if (balance) balance->add_step(info.t, info.dt, ys, ydots);
     std::string mid;
     if (output_now) {
       const LineMeasures m = write_output(info.t, ys, ydots);

@@ -734,6 +734,15 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
                            shown_at(root, "time.t_end", format_number(config.time.t_end)) + " (s)");
   }
 
+  if (!problems.is_bad("time.volume_rate") && !problems.is_bad("time.integrator") &&
+      uses_ida(config.time.integrator) &&
+      config.time.volume_rate == VolumeRate::Conservative) {
+    problems.bad_value("time.volume_rate", shown_at(root, "time.volume_rate", "\"conservative\""),
+                       "applies only to time.integrator = \"backward_euler\", not to " +
+                           shown_at(root, "time.integrator", "\"bdf\"") +
+                           " (BDF's dJ/dt is the exact rate of its own solution)");
+  }
+
   const auto& material = config.material;
   const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
   if (!problems.is_bad("material.lambda") && !problems.is_bad("material.mu") &&

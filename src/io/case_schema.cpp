@@ -63,6 +63,12 @@ const Names<Integrator>& integrator_names() {
   return names;
 }
 
+const Names<VolumeRate>& volume_rate_names() {
+  static const Names<VolumeRate> names{{"incremental", VolumeRate::Incremental},
+                                       {"conservative", VolumeRate::Conservative}};
+  return names;
+}
+
 const Names<LinearSolverType>& linear_solver_names() {
   static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu},
                                              {"umfpack", LinearSolverType::Umfpack},
@@ -396,6 +402,12 @@ std::vector<Key<Config>> build_global_keys() {
       "time.dt", above(0), "s",
       "Backward-Euler time step, and the output interval of bdf; must be <= time.t_end.",
       [](auto& c) -> auto& { return c.time.dt; }));
+  keys.push_back(choice_key<C>(
+      "time.volume_rate", volume_rate_names(),
+      "Backward Euler's dJ/dt in the mass rows and the GLS term: incremental, J F^-T : "
+      "Grad(u - u_n) / dt (the paper's), or conservative, (J - J_n) / dt (exact discrete fluid "
+      "volume balance). backward_euler only.",
+      [](auto& c) -> auto& { return c.time.volume_rate; }));
 
   keys.push_back(integer_key<C>(
       "time.newton.max_iterations", from_to(1, 1000), {},

@@ -15,6 +15,8 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
   const double k = params.permeability;
   const double ce = params.gls_c;
   const double beta_f = params.flux_beta;
+  const double dt_c = params.volume_rate_dt;
+  const bool conservative = dt_c > 0.0;
 
   // Nodal displacement and velocity as 10 × 3, pressure as 4-vector.
   const Eigen::Map<const Eigen::Matrix<double, 3, 10>> u(y.data());
@@ -41,7 +43,15 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
     const Vec3 gpdot = e.transpose() * pdot;  // ∇ₓṗ
     const Mat3 L = Fdot * Finv;               // velocity gradient
     const double divv = L.trace();
-    const double Jdot = J * divv;
+    // Conservative form: the previous state uₙ = u − Δt u̇, Jₙ = det Fₙ, bₙ = F⁻ᵀₙ∇₀N.
+    double Jn = 0.0;
+    Mat10x3 bn_prev;
+    if (conservative) {
+      const Mat3 Fn = Mat3::Identity() + (u - dt_c * v) * g.dN;
+      Jn = checked_jacobian(Fn);
+      if (with_jacobian) bn_prev = g.dN * Fn.inverse();
+    }
+    const double Jdot = conservative ? (J - Jn) / dt_c : J * divv;
     const double beta = lambda * std::log(J) - mu - pq * J;
     const Mat3 P = mu * F + beta * FinvT;  // P_eff − pJF⁻ᵀ
     const double w = g.weight;
@@ -57,8 +67,16 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
     if (!with_jacobian) continue;
 
     const Eigen::Matrix<double, 10, 10> G = g.dN * g.dN.transpose();
-    // ∂J̇/∂u_bk = J (div v · b_bk − (Lᵀ b_b)_k)
-    const Mat10x3 dJdot = J * (divv * b - b * L);  // (b L)_bk = Σ_m b_bm L_mk = (Lᵀ b_b)_k
+    // ∂J̇/∂u_bk at fixed u̇: incremental J (div v · b_bk − (Lᵀ b_b)_k), (b L)_bk = (Lᵀ b_b)_k;
+    // conservative (J b_bk − Jₙ bₙ_bk)/Δt.
+    Mat10x3 dJdot;
+    if (conservative)
+      dJdot = (J * b - Jn * bn_prev) / dt_c;
+    else
+      dJdot = J * (divv * b - b * L);
+    // ∂J̇/∂u̇_bk = Jv bv_bk: J b (incremental), Jₙ bₙ (conservative).
+    const double Jv = conservative ? Jn : J;
+    const Mat10x3& bv = conservative ? bn_prev : b;
     const double cp = lambda - pq * J;
 
     for (int a = 0; a < 10; ++a) {
@@ -69,7 +87,7 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
             if (i == kk) kuu += mu * G(a, bn);
             kuu += ce * (-b(a, kk) * b(bn, i) * Jdot + b(a, i) * dJdot(bn, kk));
             out.dfdy(3 * a + i, 3 * bn + kk) += w * kuu;
-            out.dfdydot(3 * a + i, 3 * bn + kk) += w * ce * J * b(a, i) * b(bn, kk);
+            out.dfdydot(3 * a + i, 3 * bn + kk) += w * ce * Jv * b(a, i) * bv(bn, kk);
           }
         }
       }
@@ -86,7 +104,7 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementP
         for (int kk = 0; kk < 3; ++kk) {
           const double flux = J * (b(bn, kk) * ecgq - gq(kk) * bec - e(c, kk) * bgq);
           out.dfdy(30 + c, 3 * bn + kk) += w * (g.Np(c) * dJdot(bn, kk) + flux);
-          out.dfdydot(30 + c, 3 * bn + kk) += w * g.Np(c) * J * b(bn, kk);
+          out.dfdydot(30 + c, 3 * bn + kk) += w * g.Np(c) * Jv * bv(bn, kk);
         }
       }
       for (int d = 0; d < 4; ++d) {

@@ -522,6 +522,46 @@ std::vector<std::array<double, 3>> BiphasicProblem::reactions(
   return out;
 }
 
+BiphasicProblem::FluidRates BiphasicProblem::fluid_rates(double t, const double* y,
+                                                         const double* ydot) {
+  std::vector<double> F(size());
+  assemble(t, y, ydot, F.data());  // also refreshes load_cache_ for t
+  FluidRates out;
+  for (const Dirichlet& d : dirichlet_)
+    if (d.dof >= num_u()) out.drained -= F[d.dof];
+  for (const NodalLoad& l : nodal_loads_) {
+    const double scale = l.value * curve_value(l.curve, t);
+    for (const auto& [row, amount] : l.entries)
+      if (row >= num_u()) out.prescribed += scale * amount;  // R_p += ∫ g q̄ dA
+  }
+  if (loads_.s)
+    for (Index i = num_u(); i < size(); ++i) out.source -= load_cache_[i];  // R_p −= ∫ g s dX
+  return out;
+}
+
+double BiphasicProblem::volume_change(const double* y) const {
+  double sum = 0.0;
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+    Eigen::Matrix<double, 3, 10> u;
+    for (int a = 0; a < 10; ++a)
+      for (int i = 0; i < 3; ++i) u(i, a) = y[pattern_.u_dof(mesh_.tets[e][a], i)];
+    for (const PointGeometry& g : geometry_[e]) {
+      // J − 1 without cancellation: det(I + H) − 1 = tr H + ½((tr H)² − tr H²) + det H.
+      const Mat3 H = u * g.dN;
+      const double tr = H.trace();
+      sum += g.weight * (tr + 0.5 * (tr * tr - (H * H).trace()) + H.determinant());
+    }
+  }
+  return sum;
+}
+
+void BiphasicProblem::set_conservative_volume_rate(double dt) {
+  if (!(dt >= 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
+                                " s must be >= 0 and finite");
+  params_.volume_rate_dt = dt;
+}
+
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   assemble(t, y, ydot, F);

@@ -163,6 +163,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     const double t_next = (step == num_steps) ? t_end : t0 + step * m.time.dt;
     m.dt = t_next - t;
     m.t = t_next;
+    if (m.time.volume_rate == VolumeRate::Conservative) problem.set_conservative_volume_rate(m.dt);
     m.y_old = y;
     // Residual scales from the "predictor" (previous state with the new Dirichlet values), which
     // measures the load increment: converged when ‖R_f‖ ≤ max(rtol_f ‖R_f(predictor)‖, atol_f).

@@ -153,6 +153,9 @@ struct BdfIntegrator::Impl {
 BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
                              const LinearSolverConfig& linear_solver, std::string step_log_path)
     : impl_(std::make_unique<Impl>(problem, time, linear_solver, std::move(step_log_path))) {
+  if (time.volume_rate != VolumeRate::Incremental)
+    throw std::invalid_argument(
+        "time.volume_rate = \"conservative\" applies only to backward Euler");
   Impl& m = *impl_;
   const Index n = problem.size();
   m.yy = N_VNew_Serial(n, m.sc.ctx);

@@ -203,6 +203,7 @@ TEST(CaseFile, DefaultsAppliedWhenKeysAbsent) {
   EXPECT_EQ(c.quadrature_points, 4);
   EXPECT_DOUBLE_EQ(c.time.t_end, 32.0);
   EXPECT_DOUBLE_EQ(c.time.dt, 6.4);
+  EXPECT_EQ(c.time.volume_rate, VolumeRate::Incremental);
   EXPECT_EQ(c.time.newton.max_iterations, 25);
   EXPECT_DOUBLE_EQ(c.time.newton.atol_pressure, 1e-15);
   EXPECT_EQ(c.time.newton.max_setup_calls, 10);
@@ -494,6 +495,29 @@ source = "file"
       kMinimalCase + "[material]\nlambda = -0.4\nmu = 0.6\n[time]\nt_end = 5\ndt = 5\n");
   ASSERT_EQ(boundary_case.size(), 1u);
   EXPECT_TRUE(has_problem(boundary_case, {"material.lambda = -0.4"}));
+}
+
+TEST(CaseFile, ConservativeVolumeRateIsForBackwardEulerOnly) {
+  const Config c = parse_case(kMinimalCase + "[time]\nvolume_rate = \"conservative\"\n", "x.toml");
+  EXPECT_EQ(c.time.volume_rate, VolumeRate::Conservative);
+  EXPECT_EQ(c.time.integrator, Integrator::BackwardEuler);
+
+  const auto problems =
+      problems_of(kMinimalCase + "[time]\nintegrator = \"bdf\"\nvolume_rate = \"conservative\"\n");
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_TRUE(
+      has_problem(problems, {"cases/x.toml: time.volume_rate = \"conservative\": applies "
+                             "only to time.integrator = \"backward_euler\", not to \"bdf\""}));
+  // The same from the command line names --set as the source.
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + "[time]\nintegrator = \"bdf\"\n",
+                                      {"time.volume_rate=conservative"}),
+                          {"--set: time.volume_rate = \"conservative\"", "backward_euler"}));
+  // The default with bdf, the incremental form named explicitly, and unknown names.
+  EXPECT_NO_THROW(parse_case(kMinimalCase + "[time]\nintegrator = \"bdf\"\n", "x.toml"));
+  EXPECT_NO_THROW(parse_case(
+      kMinimalCase + "[time]\nintegrator = \"bdf\"\nvolume_rate = \"incremental\"\n", "x.toml"));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + "[time]\nvolume_rate = \"exact\"\n"),
+                          {"time.volume_rate = \"exact\"", "incremental", "conservative"}));
 }
 
 TEST(CaseFile, MeshFileMustExistAndIsResolvedAgainstTheCaseFolder) {

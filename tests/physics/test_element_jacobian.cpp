@@ -34,8 +34,15 @@ ElementMatrix central_difference(const std::vector<PointGeometry>& geo, const El
   return D;
 }
 
-/// (GLS coefficient c_e, flux-perturbation β).
-using Stabilisations = std::pair<double, double>;
+/// GLS coefficient c_e, flux-perturbation β, and the Δt of the conservative volume rate
+/// J̇ = (J − Jₙ)/Δt (0: the incremental J̇ = J F⁻ᵀ:∇₀u̇).
+struct Stabilisations {
+  double gls_c = 0.0;
+  double flux_beta = 0.0;
+  double volume_rate_dt = 0.0;
+  const char* name = "";
+  friend void PrintTo(const Stabilisations& s, std::ostream* os) { *os << s.name; }
+};
 class ElementJacobian : public ::testing::TestWithParam<Stabilisations> {};
 
 // For each block: the central-difference error falls as ε² (ratio ≈ 4 per halving), or is
@@ -46,8 +53,9 @@ TEST_P(ElementJacobian, MatchesCentralDifferencesBlockByBlock) {
   ElementParameters p;
   p.material = {0.2, 0.5};
   p.permeability = 1e-2;
-  p.gls_c = GetParam().first;
-  p.flux_beta = GetParam().second;
+  p.gls_c = GetParam().gls_c;
+  p.flux_beta = GetParam().flux_beta;
+  p.volume_rate_dt = GetParam().volume_rate_dt;
   ElementVector y, ydot;
   test::random_state(7, 0.08, y, ydot);
   ElementOutput exact;
@@ -77,12 +85,13 @@ TEST_P(ElementJacobian, BackwardEulerCombinationMatchesDifferences) {
   element_point_geometry(test::distorted_tet(), tet_quadrature(4), geo);
   ElementParameters p;
   p.permeability = 1e-3;
-  p.gls_c = GetParam().first;
-  p.flux_beta = GetParam().second;
+  p.gls_c = GetParam().gls_c;
+  p.flux_beta = GetParam().flux_beta;
   ElementVector y, ydot, y_old;
   test::random_state(11, 0.05, y, ydot);
   test::random_state(12, 0.05, y_old, ydot);
   const double dt = 0.7;
+  if (GetParam().volume_rate_dt > 0.0) p.volume_rate_dt = dt;  // as the integrator sets it
   auto residual = [&](const ElementVector& yy) {
     ElementOutput o;
     biphasic_element(geo, p, yy, (yy - y_old) / dt, false, o);
@@ -102,13 +111,15 @@ TEST_P(ElementJacobian, BackwardEulerCombinationMatchesDifferences) {
   EXPECT_LT((D - A).norm() / A.norm(), 1e-7);
 }
 
+// The conservative cases use Δt = 5 s: uₙ = u − Δt u̇ is then a second, distinct deformed state
+// (|Δt u̇| up to 0.05 against displacements of 0.08), so Jₙ bₙ and J b differ.
 INSTANTIATE_TEST_SUITE_P(Stabilisations, ElementJacobian,
-                         ::testing::Values(Stabilisations{0.0, 0.0}, Stabilisations{2.5, 0.0},
-                                           Stabilisations{0.0, 0.35}),
-                         [](const auto& param_info) {
-                           if (param_info.param.first != 0.0) return "gls";
-                           return param_info.param.second != 0.0 ? "flux_perturbation" : "plain";
-                         });
+                         ::testing::Values(Stabilisations{0.0, 0.0, 0.0, "plain"},
+                                           Stabilisations{2.5, 0.0, 0.0, "gls"},
+                                           Stabilisations{0.0, 0.35, 0.0, "flux_perturbation"},
+                                           Stabilisations{0.0, 0.0, 5.0, "plain_conservative"},
+                                           Stabilisations{2.5, 0.0, 5.0, "gls_conservative"}),
+                         [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace
 }  // namespace biphasic

@@ -83,6 +83,10 @@ struct StabilisationConfig {
 enum class Integrator { BackwardEuler, Bdf, AdaptiveBackwardEuler };
 /// Whether the integrator runs on IDA (variable step, outputs by interpolation).
 inline bool uses_ida(Integrator i) { return i != Integrator::BackwardEuler; }
+/// How backward Euler discretises J̇ (in the mass rows and the GLS term). Incremental:
+/// J F⁻ᵀ:∇₀(u − uₙ)/Δt (the paper's u̇ = Δu/Δt in div v). Conservative: (J − Jₙ)/Δt, so the
+/// discrete fluid volume balance holds exactly. BDF always uses J F⁻ᵀ:∇₀u̇.
+enum class VolumeRate { Incremental, Conservative };
 
 struct NewtonConfig {
   int max_iterations = 25;
@@ -127,6 +131,7 @@ struct TimeConfig {
   Integrator integrator = Integrator::BackwardEuler;
   double t_end = 32.0;  ///< [s]
   double dt = 6.4;      ///< backward Euler step; output interval of BDF [s]
+  VolumeRate volume_rate = VolumeRate::Incremental;  ///< backward Euler only
   NewtonConfig newton;
   BdfConfig bdf;
 };

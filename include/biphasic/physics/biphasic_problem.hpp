@@ -61,6 +61,11 @@ class BiphasicProblem {
   void set_dirichlet_fields(VectorField u, ScalarField p, VectorField u_rate = {},
                             ScalarField p_rate = {});
 
+  /// Backward Euler's conservative volume rate: from now on J̇ = (J − Jₙ)/Δt with
+  /// uₙ = u − Δt u̇ in the mass rows and the GLS term (Δt = `dt` [s], the step about to be
+  /// solved); `dt` = 0 restores J̇ = J F⁻ᵀ:∇₀u̇. Throws std::invalid_argument if dt < 0.
+  void set_conservative_volume_rate(double dt);
+
   const Mesh& mesh() const { return mesh_; }
   const SparsityPattern& pattern() const { return pattern_; }
   Index size() const { return pattern_.size(); }
@@ -91,6 +96,21 @@ class BiphasicProblem {
   /// or symmetry condition.
   std::vector<std::array<double, 3>> reactions(const std::vector<std::string>& boundaries, double t,
                                                const double* y, const double* ydot);
+
+  /// Fluid volume rates at (t, y, ẏ) [mm³/s] (docs/formulation.md, *Fluid-volume balance*).
+  struct FluidRates {
+    /// −Σ of the mass residual (element terms and loads) on the pressure-Dirichlet rows: the
+    /// fluid leaving through the drained faces (the negative fluid reaction).
+    double drained = 0.0;
+    double prescribed = 0.0;  ///< ∫Γq q̄ dA of the flux conditions (outward)
+    double source = 0.0;      ///< ∫Ω₀ s dX of the fluid source
+  };
+  /// Summing all mass rows (Σ g = 1 removes the Darcy term): at a converged state (free mass
+  /// rows ≈ 0) ∫Ω₀ J̇ dX = source − drained − prescribed.
+  FluidRates fluid_rates(double t, const double* y, const double* ydot);
+  /// ∫Ω₀ (J − 1) dX [mm³]: the body's volume change from the reference configuration, with
+  /// the element quadrature rule.
+  double volume_change(const double* y) const;
 
   /// Sets the constrained entries of y to ḡ(t) and of ẏ to dḡ/dt (ẏ may be null).
   void apply_dirichlet(double t, double* y, double* ydot) const;

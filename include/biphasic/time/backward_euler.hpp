@@ -1,8 +1,9 @@
 // Backward Euler with a fixed step (the paper's scheme): each step solves
 //   F(tₙ₊₁, y, (y − yₙ)/Δt) = 0
-// by KINSOL's Newton iteration with the configured sparse direct solver, the Jacobian being
-// dF/dy + (1/Δt) dF/dẏ. Factorisations are reused across iterations and steps while
-// convergence allows (KINSetMaxSetupCalls, KINSetNoInitSetup).
+// (with time.volume_rate = conservative, J̇ = (J − Jₙ)/Δt: BiphasicProblem::
+// set_conservative_volume_rate before each step) by KINSOL's Newton iteration with the configured
+// sparse direct solver, the Jacobian being dF/dy + (1/Δt) dF/dẏ. Factorisations are reused across
+// iterations and steps while convergence allows (KINSetMaxSetupCalls, KINSetNoInitSetup).
 #pragma once
 
 #include <memory>
