@@ -24,6 +24,7 @@
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/measures.hpp"
+#include "biphasic/study/oscillation_advisor.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic {
@@ -194,6 +195,11 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       say(s.str());
     }
   }
+
+  // First-step oscillation regime at each drained face (r = c dt / h² against its threshold).
+  const OscillationAdvice advice = advise_oscillation(mesh, config);
+  summary["advisor"] = to_json(advice);
+  for (const std::string& line : advice_lines(advice)) say(line);
 
   // Observers: probe line, fields, per-step records.
   const Point a = config.output.line_start, b = config.output.line_end;
