@@ -157,6 +157,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const std::unique_ptr<TimeIntegrator> integrator_ptr =
       make_time_integrator(problem, config, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
+  integrator.set_log(say);
   const double setup_seconds = seconds_since(t0);
   summary["mesh"] = {{"nodes", mesh.num_nodes()},
                      {"vertices", mesh.num_vertices},
@@ -263,6 +264,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"refinement_steps", ls.refinement_steps},
                            {"precision_fallbacks", ls.precision_fallbacks},
                            {"fill_ratio", ls.fill}};
+    if (config.time.integrator == Integrator::BackwardEuler) {
+      summary["counters"]["cutbacks"] = is.cutbacks.size();
+      nlohmann::json cuts = nlohmann::json::array();
+      for (const Cutback& c : is.cutbacks)
+        cuts.push_back({{"step", c.step}, {"t", c.t}, {"dt", c.dt}, {"reason", c.reason}});
+      summary["cutbacks"] = cuts;
+    }
     if (config.time.integrator == Integrator::Bdf) {
       summary["counters"]["error_test_failures"] = is.error_test_failures;
       summary["counters"]["restarts"] = is.restarts;
@@ -304,6 +312,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                        {"dt", info.dt},
                        {"order", info.order},
                        {"internal_steps", info.internal_steps},
+                       {"sub_steps", info.sub_steps},
                        {"newton_iterations", info.newton_iterations},
                        {"jacobian_evaluations", info.setups},
                        {"residual_u", info.residual_u},
@@ -340,7 +349,10 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                     info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
                     info.residual_u, info.residual_p);
     }
-    say(line + mid);
+    std::string sub;
+    if (config.time.integrator == Integrator::BackwardEuler && info.sub_steps > 1)
+      sub = "  sub-steps " + std::to_string(info.sub_steps);
+    say(line + sub + mid);
   };
 
   try {
