@@ -26,6 +26,7 @@
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/volume_balance.hpp"
 #include "biphasic/study/measures.hpp"
+#include "biphasic/study/oscillation_advisor.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic {
@@ -158,6 +159,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const std::unique_ptr<TimeIntegrator> integrator_ptr =
       make_time_integrator(problem, config, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
+  integrator.set_log(say);
   const double setup_seconds = seconds_since(t0);
   summary["mesh"] = {{"nodes", mesh.num_nodes()},
                      {"vertices", mesh.num_vertices},
@@ -196,6 +198,11 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       say(s.str());
     }
   }
+
+  // First-step oscillation regime at each drained face (r = c dt / h² against its threshold).
+  const OscillationAdvice advice = advise_oscillation(mesh, config);
+  summary["advisor"] = to_json(advice);
+  for (const std::string& line : advice_lines(advice)) say(line);
 
   // Observers: probe line, fields, per-step records.
   const Point a = config.output.line_start, b = config.output.line_end;
@@ -274,6 +281,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                            {"shift_correction_iterations", ls.shift_correction_iterations},
                            {"shift_correction_failures", ls.shift_correction_failures},
                            {"fill_ratio", ls.fill}};
+    if (config.time.integrator == Integrator::BackwardEuler) {
+      summary["counters"]["cutbacks"] = is.cutbacks.size();
+      nlohmann::json cuts = nlohmann::json::array();
+      for (const Cutback& c : is.cutbacks)
+        cuts.push_back({{"step", c.step}, {"t", c.t}, {"dt", c.dt}, {"reason", c.reason}});
+      summary["cutbacks"] = cuts;
+    }
     if (uses_ida(config.time.integrator)) {
       summary["counters"]["error_test_failures"] = is.error_test_failures;
       summary["counters"]["restarts"] = is.restarts;
@@ -326,6 +340,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                        {"dt", info.dt},
                        {"order", info.order},
                        {"internal_steps", info.internal_steps},
+                       {"sub_steps", info.sub_steps},
                        {"newton_iterations", info.newton_iterations},
                        {"jacobian_evaluations", info.setups},
                        {"residual_u", info.residual_u},
@@ -363,7 +378,10 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                     info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
                     info.residual_u, info.residual_p);
     }
-    say(line + mid);
+    std::string sub;
+    if (config.time.integrator == Integrator::BackwardEuler && info.sub_steps > 1)
+      sub = "  sub-steps " + std::to_string(info.sub_steps);
+    say(line + sub + mid);
   };
 
   try {

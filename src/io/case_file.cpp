@@ -735,8 +735,7 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
   }
 
   if (!problems.is_bad("time.volume_rate") && !problems.is_bad("time.integrator") &&
-      uses_ida(config.time.integrator) &&
-      config.time.volume_rate == VolumeRate::Conservative) {
+      uses_ida(config.time.integrator) && config.time.volume_rate == VolumeRate::Conservative) {
     problems.bad_value("time.volume_rate", shown_at(root, "time.volume_rate", "\"conservative\""),
                        "applies only to time.integrator = \"backward_euler\", not to " +
                            shown_at(root, "time.integrator", "\"bdf\"") +

@@ -437,6 +437,13 @@ std::vector<Key<Config>> build_global_keys() {
       "time.newton.reuse_across_steps",
       "Keep the Jacobian factorisation from the previous time step.",
       [](auto& c) -> auto& { return c.time.newton.reuse_across_steps; }));
+  keys.push_back(integer_key<C>(
+      "time.newton.max_cutbacks", from_to(0, 30), {},
+      "Backward Euler: after a failed Newton solve (no convergence, inverted element), halve the "
+      "step and retry from the last converged state, down to time.dt / 2^max_cutbacks; the step "
+      "doubles again after 2 successful sub-steps and outputs stay at t0 + k dt (0 = a failure "
+      "stops the run).",
+      [](auto& c) -> auto& { return c.time.newton.max_cutbacks; }));
 
   keys.push_back(number_key<C>(
       "time.bdf.rtol", strictly_between(0, 1), "", "Relative tolerance of IDA's local error test.",

@@ -158,19 +158,27 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
   std::vector<double> y_previous;  // state before the last step (empty before the first)
   double dt_previous = 0.0;
 
-  double t = t0;
-  for (int step = 1; step <= num_steps; ++step) {
-    const double t_next = (step == num_steps) ? t_end : t0 + step * m.time.dt;
+  // One step from (t, y) to t_next; the solution is left in yv. Returns the reason of a
+  // failure (empty on success) and adds the Newton iterations to `iterations`; `newton_ran`
+  // tells whether KINSOL ran (its last residual is then meaningful).
+  bool newton_ran = false;
+  auto solve_step = [&](double t, double t_next, long& iterations) -> std::string {
+    newton_ran = false;
     m.dt = t_next - t;
     m.t = t_next;
     if (m.time.volume_rate == VolumeRate::Conservative) problem.set_conservative_volume_rate(m.dt);
     m.y_old = y;
-    // Residual scales from the "predictor" (previous state with the new Dirichlet values), which
-    // measures the load increment: converged when ‖R_f‖ ≤ max(rtol_f ‖R_f(predictor)‖, atol_f).
+    // Residual scales from the "predictor" (previous state with the new Dirichlet values),
+    // which measures the load increment: converged when ‖R_f‖ ≤ max(rtol_f ‖R_f(predictor)‖,
+    // atol_f).
     std::copy(y.begin(), y.end(), yv);
     problem.apply_dirichlet(t_next, yv, nullptr);
     m.rate(yv);
-    problem.residual(t_next, yv, m.ydot.data(), F.data());
+    try {
+      problem.residual(t_next, yv, m.ydot.data(), F.data());
+    } catch (const InvertedElement& e) {
+      return std::string("predictor: ") + e.what();
+    }
     const auto [ru0, rp0] = problem.field_norms(F.data());
     const double su = 1.0 / std::max(newton.rtol_displacement * ru0, newton.atol_displacement);
     const double sp = 1.0 / std::max(newton.rtol_pressure * rp0, newton.atol_pressure);
@@ -189,9 +197,8 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     };
     initial_guess();
 
-    const long jac_before = problem.stats().jacobian_evaluations;
     int flag = 0;
-    long iterations = 0;
+    newton_ran = true;
     // Attempts: (1) reuse the factorisation (modified Newton); (2) fresh Jacobian every
     // iteration; (3) full Newton with a line search. Each restarts from the initial guess.
     for (int attempt = 0; attempt < 3; ++attempt) {
@@ -205,32 +212,79 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       long nni = 0;
       KINGetNumNonlinSolvIters(m.kin, &nni);
       iterations += nni;
-      if (flag >= 0) break;
+      if (flag >= 0) return {};
       ++stats_.nonlinear_failures;
     }
-    if (flag < 0) {
-      const auto [ru, rp] = problem.field_norms(m.last_residual.data());
-      std::ostringstream msg;
-      msg << "backward Euler step " << step << " (t = " << t_next << " s, dt = " << m.dt
-          << " s) failed: " << kinsol_reason(flag);
-      if (!m.failure.empty()) msg << " (" << m.failure << ")";
-      msg << "; last residual |R_u| = " << ru << " N, |R_p| = " << rp << " mm^3/s";
-      throw StepFailure(msg.str());
+    std::string reason = kinsol_reason(flag);
+    if (!m.failure.empty()) reason += " (" + m.failure + ")";
+    return reason;
+  };
+
+  // Cut-back: a failed step is retried from the last converged state with half the step, down
+  // to time.dt / 2^max_cutbacks; after kGrowAfter successful sub-steps at one size the step
+  // doubles again. Sub-steps never pass the next output time t0 + k·time.dt.
+  constexpr int kGrowAfter = 2;
+  int level = 0;  // sub-step = time.dt / 2^level
+  int successes = 0;
+  double t = t0;
+  for (int step = 1; step <= num_steps; ++step) {
+    const double t_out = (step == num_steps) ? t_end : t0 + step * m.time.dt;
+    const long jac_before = problem.stats().jacobian_evaluations;
+    long iterations = 0;
+    int sub_steps = 0;
+    while (t < t_out) {
+      const double h = std::ldexp(m.time.dt, -level);
+      // Land exactly on the output time (round-off of t + h included).
+      const double t_next = t + h >= t_out - 1e-9 * h ? t_out : t + h;
+      const std::string reason = solve_step(t, t_next, iterations);
+      if (!reason.empty()) {
+        if (level >= newton.max_cutbacks) {
+          std::ostringstream msg;
+          msg << "backward Euler step " << step << " (t = " << t_next << " s, dt = " << m.dt
+              << " s";
+          if (level > 0)
+            msg << ", after " << level << " cut-backs of time.dt = " << m.time.dt << " s";
+          msg << ") failed: " << reason;
+          if (newton_ran) {
+            const auto [ru, rp] = problem.field_norms(m.last_residual.data());
+            msg << "; last residual |R_u| = " << ru << " N, |R_p| = " << rp << " mm^3/s";
+          }
+          throw StepFailure(msg.str());
+        }
+        ++level;
+        successes = 0;
+        have_factorisation = false;  // its c_j = 1/Δt belongs to the failed step
+        const Cutback cut{step, t, std::ldexp(m.time.dt, -level), reason};
+        stats_.cutbacks.push_back(cut);
+        std::ostringstream msg;
+        msg << "cut-back: step " << step << " at t = " << t << " s, dt = " << m.dt << " s failed ("
+            << reason << "); retrying with dt = " << cut.dt << " s (time.dt/" << (1L << level)
+            << ", limit time.dt/" << (1L << newton.max_cutbacks) << ")";
+        note(msg.str());
+        continue;
+      }
+      have_factorisation = true;
+      y_previous = y;
+      dt_previous = m.dt;
+      std::copy(yv, yv + n, y.begin());
+      t = t_next;
+      ++sub_steps;
+      ++stats_.steps;
+      if (level > 0 && ++successes >= kGrowAfter) {
+        --level;
+        successes = 0;
+        have_factorisation = false;
+      }
     }
-    have_factorisation = true;
-    y_previous = y;
-    dt_previous = m.dt;
-    std::copy(yv, yv + n, y.begin());
-    t = t_next;
 
     StepInfo info;
     info.step = step;
     info.t = t;
     info.dt = m.dt;
+    info.sub_steps = sub_steps;
     info.newton_iterations = static_cast<int>(iterations);
     info.setups = static_cast<int>(problem.stats().jacobian_evaluations - jac_before);
     std::tie(info.residual_u, info.residual_p) = problem.field_norms(m.last_residual.data());
-    ++stats_.steps;
     stats_.newton_iterations += iterations;
     m.rate(yv);  // ẏ of the converged state
     if (observer) observer(info, y, m.ydot);

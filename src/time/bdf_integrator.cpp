@@ -241,7 +241,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
         horizon = std::min(horizon, k - t);
         break;
       }
-    return 1e-2 * horizon;
+    return default_first_step(horizon, horizon);
   };
   const double allowed_imbalance =
       absolute_tolerances(problem, bdf).first * problem.stiffness_scale();

@@ -610,7 +610,8 @@ line_end = [0, 0, 4]
         "quadrature", "time", "linear_solver", "output"}) {
     EXPECT_TRUE(j.contains(section)) << section;
   }
-  EXPECT_EQ(j["time"]["newton"].size(), 7u);
+  EXPECT_EQ(j["time"]["newton"].size(), 8u);
+  EXPECT_EQ(j["time"]["newton"]["max_cutbacks"], 4);
   EXPECT_EQ(j["mesh"].size(), 14u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
   EXPECT_EQ(j["mesh"]["column"].size(), 8u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);

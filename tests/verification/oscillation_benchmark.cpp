@@ -25,7 +25,9 @@ double load_of(const Config& config) {
   throw std::runtime_error("oscillation case without a normal traction");
 }
 
-FirstStepOvershoot first_step(const Mesh& mesh, Config config, double r) {
+}  // namespace
+
+FirstStepOvershoot first_step_overshoot(const Mesh& mesh, Config config, double r) {
   const double h = config.mesh.column.height / config.mesh.column.nz;
   const double c =
       config.material.permeability * (config.material.lambda + 2.0 * config.material.mu);
@@ -57,8 +59,6 @@ FirstStepOvershoot first_step(const Mesh& mesh, Config config, double r) {
   return out;
 }
 
-}  // namespace
-
 OscillationSweep sweep_first_step(int nz) {
   const std::string width = std::to_string(1.0 / nz);
   const Config base = read_case_file(case_path("oscillation", "oscillation.toml"),
@@ -73,7 +73,7 @@ OscillationSweep sweep_first_step(int nz) {
     Config config = base;
     config.stabilisation.type = type;
     auto& values = sweep.overshoot[name];
-    for (double r : kSweep) values.push_back(first_step(mesh, config, r));
+    for (double r : kSweep) values.push_back(first_step_overshoot(mesh, config, r));
     // Bisection between the last r that overshoots and the first after which none does.
     auto threshold = [&](double FirstStepOvershoot::*measure) {
       std::size_t first_clean = values.size();
@@ -83,7 +83,7 @@ OscillationSweep sweep_first_step(int nz) {
       double lo = kSweep[first_clean - 1], hi = kSweep[first_clean];
       while (hi - lo > 1e-3 * hi) {
         const double mid = 0.5 * (lo + hi);
-        (first_step(mesh, config, mid).*measure < kVanished ? hi : lo) = mid;
+        (first_step_overshoot(mesh, config, mid).*measure < kVanished ? hi : lo) = mid;
       }
       return hi;
     };

@@ -31,6 +31,10 @@ struct OscillationSweep {
   std::map<std::string, double> level_threshold;
 };
 
+/// One backward-Euler step of Δt = r h² / c (h = the layer thickness H/nz, c = k (λ + 2μ)) of
+/// the column case `config` on `mesh`, from rest under the step load q.
+FirstStepOvershoot first_step_overshoot(const Mesh& mesh, Config config, double r);
+
 /// Runs the first step for each r and stabilisation on nz layers of cubic cells (h = H/nz).
 /// When $BIPHASIC_VERIFICATION_OUT is set, writes oscillation/overshoot_nz<nz>.csv
 /// (r, stabilisation, overshoot, level_mean_overshoot, line_oscillation) and

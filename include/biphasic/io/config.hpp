@@ -98,6 +98,9 @@ struct NewtonConfig {
   double atol_pressure = 1e-15;      ///< mass rows [mm³/s]
   int max_setup_calls = 10;          ///< Newton iterations between Jacobian refreshes (1 = full)
   bool reuse_across_steps = true;    ///< keep the factorisation from the previous step
+  /// Backward Euler: successive halvings of the step after a failed Newton solve, down to
+  /// time.dt / 2^max_cutbacks (0 = a failure stops the run).
+  int max_cutbacks = 4;
 };
 
 /// Variable-order, variable-step BDF (SUNDIALS IDA). Defaults chosen by measurement

@@ -25,7 +25,10 @@ class BackwardEuler final : public TimeIntegrator {
   BackwardEuler& operator=(const BackwardEuler&) = delete;
 
   /// Integrates from t0 (y = initial state, overwritten with the final one) to time.t_end in
-  /// steps of time.dt (the last one shortened to land on t_end). Throws StepFailure.
+  /// steps of time.dt (the last one shortened to land on t_end). A failed step is retried from
+  /// the last converged state with Δt/2, at most time.newton.max_cutbacks halvings deep; the
+  /// step doubles back after 2 successful sub-steps, and the observer sees only the output
+  /// times t0 + k·time.dt. Throws StepFailure when a step fails at the smallest size.
   void run(double t0, std::vector<double>& y, const StepObserver& observer) override;
   int planned_outputs() const override;
 

@@ -6,22 +6,33 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace biphasic {
 
-/// One accepted step (backward Euler) or one output time (BDF), as printed on the terminal
-/// and passed to observers.
+/// One output time (backward Euler: one interval of time.dt, in one step or several sub-steps
+/// after cut-backs; BDF: the internal steps since the previous output), as printed on the
+/// terminal and passed to observers.
 struct StepInfo {
-  int step = 0;     ///< 1-based
-  double t = 0.0;   ///< end of the step [s]
-  double dt = 0.0;  ///< [s]
-  int newton_iterations = 0;
-  int setups = 0;           ///< Jacobian evaluations (= factorisations) in this step
-  int internal_steps = 0;   ///< BDF: internal steps since the previous output
-  int order = 0;            ///< BDF: order of the last internal step
-  double residual_u = 0.0;  ///< ‖R_u‖_∞ over free momentum rows at the solution [N]
-  double residual_p = 0.0;  ///< ‖R_p‖_∞ over free mass rows [mm³/s]
+  int step = 0;               ///< 1-based
+  double t = 0.0;             ///< end of the step [s]
+  double dt = 0.0;            ///< the last (sub-)step [s]
+  int newton_iterations = 0;  ///< over the sub-steps (backward Euler)
+  int setups = 0;             ///< Jacobian evaluations (= factorisations) in this step
+  int internal_steps = 0;     ///< BDF: internal steps since the previous output
+  int order = 0;              ///< BDF: order of the last internal step
+  double residual_u = 0.0;    ///< ‖R_u‖_∞ over free momentum rows at the solution [N]
+  double residual_p = 0.0;    ///< ‖R_p‖_∞ over free mass rows [mm³/s]
+  int sub_steps = 1;          ///< backward Euler: steps taken since the previous output
+};
+
+/// A backward-Euler step that failed and was retried with half the step.
+struct Cutback {
+  int step = 0;     ///< output step (1-based) being integrated
+  double t = 0.0;   ///< start of the failed step [s]
+  double dt = 0.0;  ///< the new, halved step [s]
+  std::string reason;
 };
 
 /// Counters accumulated over a run (over restarts, for BDF). Residual and Jacobian evaluations
@@ -34,6 +45,7 @@ struct IntegratorStats {
   long restarts = 0;               ///< BDF: re-initialisations at load-curve kinks
   std::vector<long> order_counts;  ///< BDF: steps taken at order 1..5 (index q − 1)
   std::vector<double> step_sizes;  ///< BDF: every accepted internal step [s]
+  std::vector<Cutback> cutbacks;   ///< backward Euler: every step halved after a failure
   /// BDF: the consistent start at t₀ and at every restart, with ‖F(t, y, ẏ)‖∞ there.
   struct Start {
     double t = 0.0;
@@ -44,9 +56,9 @@ struct IntegratorStats {
   std::vector<Start> starts;
 };
 
-/// Called after every accepted step (backward Euler) or output time (BDF) with the solution y
-/// and its rate ẏ at StepInfo::t (backward Euler: the step's difference quotient; BDF: IDA's
-/// interpolant).
+/// Called at every output time t0 + k·time.dt (backward Euler: after the last sub-step of that
+/// interval; BDF: by interpolation) with the solution y and its rate ẏ at StepInfo::t
+/// (backward Euler: the last sub-step's difference quotient; BDF: IDA's interpolant).
 using StepObserver = std::function<void(const StepInfo&, const std::vector<double>& y,
                                         const std::vector<double>& ydot)>;
 
@@ -56,6 +68,12 @@ struct StepFailure : std::runtime_error {
 };
 
 struct LinearSolverStats;
+
+/// IDA's first step when time.bdf.initial_step is 0 [s]: 1 % of the first output interval or
+/// of the time to the first load-curve kink, whichever is shorter (docs/integrators.md).
+inline double default_first_step(double output_interval, double time_to_first_stop) {
+  return 1e-2 * std::min(output_interval, time_to_first_stop);
+}
 
 /// Number of intervals of length dt in [0, t_end], the last one shortened to land on t_end.
 inline int interval_count(double t_end, double dt) {
@@ -73,6 +91,17 @@ class TimeIntegrator {
   virtual int planned_outputs() const = 0;
   virtual const IntegratorStats& stats() const = 0;
   virtual const LinearSolverStats& linear_solver_stats() const = 0;
+  /// Where the integrator's notes during a run go (one line each; e.g. cut-backs). None by
+  /// default.
+  void set_log(std::function<void(const std::string&)> log) { log_ = std::move(log); }
+
+ protected:
+  void note(const std::string& line) const {
+    if (log_) log_(line);
+  }
+
+ private:
+  std::function<void(const std::string&)> log_;
 };
 
 }  // namespace biphasic
