@@ -491,6 +491,11 @@ std::vector<Key<Config>> build_global_keys() {
       "After a load-curve kink, restart from the last accepted step (else from initial_step).",
       [](auto& c) -> auto& { return c.time.bdf.restart_from_last_step; }));
   keys.push_back(bool_key<C>(
+      "time.bdf.stop_at_outputs",
+      "End an internal step on every output time (outputs are step values, not interpolated; "
+      "with GLS the reactions depend on the rate).",
+      [](auto& c) -> auto& { return c.time.bdf.stop_at_outputs; }));
+  keys.push_back(bool_key<C>(
       "time.bdf.step_log", "Write steps.csv with t, h and order of every internal step.",
       [](auto& c) -> auto& { return c.time.bdf.step_log; }));
 

@@ -304,13 +304,20 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     return std::pair<long, long>{stats_.steps + steps, stats_.newton_iterations + nni};
   };
   std::size_t stop = 0;
-  check(IDASetStopTime(m.ida, stops[stop]), "IDASetStopTime");
+  int next_output = 1;
+  // IDA's stop time: the next kink, or with stop_at_outputs the next output if it comes first.
+  auto target = [&] {
+    double s = stops[stop];
+    if (bdf.stop_at_outputs && next_output <= outputs) s = std::min(s, output_time(next_output));
+    return s;
+  };
+  check(IDASetStopTime(m.ida, target()), "IDASetStopTime");
   std::pair<long, long> at_last_output{0, 0};
   std::vector<double> y_out(n), ydot_out(n), F(n);
-  for (int next_output = 1; next_output <= outputs;) {
+  while (next_output <= outputs) {
     double tret = t0;
     m.failure.clear();
-    const int flag = IDASolve(m.ida, stops[stop], &tret, m.yy, m.yp, IDA_ONE_STEP);
+    const int flag = IDASolve(m.ida, target(), &tret, m.yy, m.yp, IDA_ONE_STEP);
     if (flag < 0) {
       std::ostringstream msg;
       double h = 0.0;
@@ -348,12 +355,16 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       if (observer) observer(info, y_out, ydot_out);
       ++next_output;
     }
-    if (flag == IDA_TSTOP_RETURN && stop + 1 < stops.size()) {
-      // A kink of a load curve: restart from the values consistent after it.
-      std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
-      start(tret, y);
-      ++stop;
-      check(IDASetStopTime(m.ida, stops[stop]), "IDASetStopTime");
+    if (flag == IDA_TSTOP_RETURN) {
+      const bool kink = stop + 1 < stops.size() &&
+                        std::abs(tret - stops[stop]) <= 1e-12 * std::max(1.0, t_end);
+      if (kink) {
+        // A kink of a load curve: restart from the values consistent after it.
+        std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
+        start(tret, y);
+        ++stop;
+      }
+      if (next_output <= outputs) check(IDASetStopTime(m.ida, target()), "IDASetStopTime");
     }
   }
   std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());

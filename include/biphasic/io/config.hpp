@@ -118,7 +118,7 @@ struct BdfConfig {
   double initial_step = 0.0;
   double max_step = 0.0;     ///< [s]; 0 = unlimited
   long max_steps = 100000;   ///< internal steps allowed between two outputs
-  double max_growth = 10.0;  ///< largest step-size ratio between steps (IDASetEtaMax) [-]
+  double max_growth = 2.0;  ///< largest step-size ratio between steps (IDASetEtaMax) [-]
   /// Relative change of c_j = α/h that forces a new factorisation (IDASetDeltaCjLSetup): with
   /// shift_correction, 0.9 (c_j may drift by a factor 19 on one factorisation).
   double delta_cj = 0.9;
@@ -127,6 +127,9 @@ struct BdfConfig {
   bool shift_correction = true;
   /// After a load-curve kink, start from the last accepted step instead of a fresh estimate.
   bool restart_from_last_step = true;
+  /// End an internal step on every output time, so that outputs are step values (y, ẏ with
+  /// F = 0) rather than interpolated: with GLS the reactions depend on ẏ.
+  bool stop_at_outputs = true;
   bool step_log = false;  ///< write steps.csv (t, h, order) of every internal step
 };
 
