@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -66,7 +68,10 @@ TEST(ConsistentStart, RateSatisfiesTheDifferentiatedSystem) {
     if (!problem.constrained()[problem.pattern().p_dof(v)])
       y[problem.pattern().p_dof(v)] =
           0.004 * std::sin(0.4 * mesh.nodes[v][2]) + 1e-4 * mesh.nodes[v][0];
-  const std::vector<double> yd = consistent_start(problem, t0, y, cfg.linear_solver).ydot;
+  // The state is not in equilibrium: the start corrects its algebraic part first (y → cs.y).
+  const ConsistentState cs = consistent_start(problem, t0, y, cfg.linear_solver);
+  y = cs.y;
+  const std::vector<double>& yd = cs.ydot;
   std::vector<double> zero(n, 0.0), F(n), Fp(n), Fm(n);
   // Mass rows: F_p(t0, y0, ẏ0) = 0.
   problem.residual(t0, y.data(), yd.data(), F.data());
@@ -322,6 +327,9 @@ TEST(Bdf, ConvergesAtItsMaximumOrder) {
     c.time.bdf.atol_displacement = 1e-3 * rtol;  // mm
     c.time.bdf.atol_pressure = 1e-4 * rtol;      // MPa
     c.time.bdf.max_order = q;
+    // Start near the asymptotic step size: the start-up phase (doubling from a small first
+    // step) adds steps that do not scale with the tolerance and steepen the measured slope.
+    c.time.bdf.initial_step = 1.0;
     BiphasicProblem problem(mesh, c);
     BdfIntegrator bdf(problem, c.time, c.linear_solver);
     std::vector<double> y(problem.size(), 0.0);
@@ -336,6 +344,7 @@ TEST(Bdf, ConvergesAtItsMaximumOrder) {
       const auto [p, steps] = solve(rtol, q);
       const double x = std::log(static_cast<double>(steps));
       const double yv = std::log(max_diff(p, reference) / max_abs(reference));
+      std::printf("q %d rtol %g steps %ld error %g\n", q, rtol, steps, std::exp(yv));
       sx += x;
       sy += yv;
       sxx += x * x;
