@@ -11,6 +11,8 @@ For a time-error table (columns error_pressure, ...), writes per scene:
 For a failure table (column divisor): failure_<scene>.png, the largest converging fixed step
 against the applied strain, with and without stabilisation.
 PNG at 200 dpi into DIR (default: docs/figures/integrators).
+--markdown prints the tables of docs/integrators.md instead: every run, and for each scene and
+stabilisation the cheapest run of each method whose pressure time error is <= 1e-3 and 1e-4.
 """
 import argparse
 import collections
@@ -22,6 +24,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 METHODS = [  # (method column, legend, style)
@@ -78,18 +81,21 @@ def time_error_figure(rows, measure, costs, out, name, title):
         for i, cost in enumerate(costs):
             ax = axes[i][j]
             for method, label, style in METHODS:
-                pts = sorted((num(r, cost), num(r, col)) for r in sr
-                             if r["method"] == method and r["status"] == "completed")
+                # joined in the order of the method's parameter (coarse step / loose tolerance first)
+                pts = [(num(r, cost), num(r, col)) for r in
+                       sorted(sr, key=lambda r: -num(r, "value"))
+                       if r["method"] == method and r["status"] == "completed"]
                 pts = [(x, y) for x, y in pts if x > 0 and y > 0 and not math.isnan(x + y)]
                 if pts:
                     ax.plot(*zip(*pts), label=label, ms=5, lw=1.2, **style)
-                failed = [r for r in sr if r["method"] == method and r["status"] != "completed"]
-                if failed and i == 0 and j == 0:
-                    pass
             if check and check[0] > 0:
                 ax.axhline(check[0], color="grey", lw=0.8, ls=":",
                            label="reference check (rtol 1e-7 vs 1e-8)")
-            ax.set_xscale("log")
+            if cost == "factorizations":  # a handful: linear axis, integer ticks
+                ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+                ax.set_xlim(left=0)
+            else:
+                ax.set_xscale("log")
             ax.set_yscale("log")
             ax.grid(True, which="major", alpha=0.3)
             ax.set_xlabel(COST[cost])
@@ -111,40 +117,148 @@ def time_error_figure(rows, measure, costs, out, name, title):
 
 
 def failure_figure(rows, out, name):
-    fig, ax = plt.subplots(figsize=(5.6, 4.2))
-    styles = {"gls": dict(color="tab:blue", marker="o"), "none": dict(color="tab:red", marker="s"),
-              "flux_perturbation": dict(color="tab:purple", marker="^")}
+    """(a) largest converging step against strain; (b) the platen's strain increment per step at
+    that step. A combination whose coarsest step (t_end) converged is a lower bound (arrow)."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    styles = {"gls": dict(color="tab:blue", marker="o", ms=10, mfc="none", mew=1.6, ls="-"),
+              "none": dict(color="tab:red", marker="s", ms=5, ls="--"),
+              "flux_perturbation": dict(color="tab:purple", marker="^", ms=6, ls=":")}
     by = collections.defaultdict(dict)
-    t_end = {}
+    t_end, height = {}, {}
     for r in rows:
         strain = num(r, "param:loading.strain")
-        dt = num(r, "largest_converged_dt")
-        by[r["stabilisation"]][strain] = dt
+        by[r["stabilisation"]][strain] = num(r, "largest_converged_dt")
         t_end[strain] = num(r, "t_end")
     for stab, d in by.items():
-        xs = sorted(d)
-        ok = [(100 * x, d[x]) for x in xs if not math.isnan(d[x])]
-        if ok:
-            ax.plot(*zip(*ok), label=STAB[stab], lw=1.3, ms=6, **styles.get(stab, {}))
-        for x in xs:
-            if math.isnan(d[x]):
-                ax.plot(100 * x, min(v for v in d.values() if not math.isnan(v)) / 2, "x",
-                        color=styles.get(stab, {}).get("color", "k"))
+        xs = [x for x in sorted(d) if not math.isnan(d[x])]
+        for ax, f in ((axes[0], lambda x: d[x]), (axes[1], lambda x: 100 * x * d[x] / t_end[x])):
+            ys = [f(x) for x in xs]
+            ax.plot([100 * x for x in xs], ys, label=STAB[stab], lw=1.3, **styles.get(stab, {}))
+            for x, y in zip(xs, ys):
+                if abs(d[x] - t_end[x]) < 1e-9 * t_end[x]:
+                    ax.annotate("", xy=(100 * x, y * 1.6), xytext=(100 * x, y),
+                                arrowprops=dict(arrowstyle="->", color="grey"))
+        failed = [x for x in sorted(d) if math.isnan(d[x])]
+        for x in failed:
+            axes[0].plot(100 * x, 1, "x", color=styles.get(stab, {}).get("color", "k"))
     xs = sorted(t_end)
-    ax.plot([100 * x for x in xs], [t_end[x] for x in xs], color="grey", ls=":", lw=1,
-            label="t_end (the whole load in one step)")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("applied compressive strain [%]")
-    ax.set_ylabel("largest converging Δt [s]")
-    ax.set_title("Backward Euler without cut-back, mesh 1, 2.5 µm/s", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(frameon=False, fontsize=9)
+    axes[0].plot([100 * x for x in xs], [t_end[x] for x in xs], color="grey", ls=":", lw=1,
+                 label="t_end (the whole load in one step)")
+    axes[0].set_ylabel("largest converging Δt [s]")
+    axes[1].set_ylabel("platen strain increment per step at that Δt [%]")
+    for i, ax in enumerate(axes):
+        ax.set_xscale("log")
+        ax.set_yscale("log" if i == 0 else "linear")
+        if i == 1:
+            ax.set_ylim(bottom=0)
+        ax.set_xlabel("applied compressive strain [%]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(frameon=False, fontsize=9)
+        panel_letter(ax, i)
+    fig.suptitle("Backward Euler without cut-back, mesh 1, k = 1e-3, 2.5 µm/s "
+                 "(Δt = t_end / N, N = 1, 2, 4, ...; arrow: t_end itself converged)", fontsize=10)
     fig.tight_layout()
     path = out / name
     fig.savefig(path, dpi=200)
     plt.close(fig)
     print(path)
+
+
+def param_text(r):
+    if r["method"] == "backward_euler":
+        return f"Δt {float(r['value']):g} s"
+    if r["method"].startswith("reference"):
+        return f"rtol {float(r['bdf_rtol']):g}"
+    return f"rtol {float(r['value']):g}"
+
+
+def fmt(x, digits=2):
+    return "—" if math.isnan(x) else f"{x:.{digits}e}"
+
+
+def wall_at(runs, target, cost="wall_s"):
+    """Wall time at the target pressure error, interpolated log-log between the two runs of a
+    method (in parameter order) that bracket it; ('<=', wall) of the cheapest run when even the
+    coarsest run is below the target; None when no run reaches it."""
+    runs = sorted(runs, key=lambda r: -num(r, "value"))
+    pts = [(num(r, "error_pressure"), num(r, cost)) for r in runs]
+    pts = [(e, w) for e, w in pts if e > 0 and w > 0]
+    if not pts or min(e for e, _ in pts) > target:
+        return None
+    if pts[0][0] <= target:
+        return "≤", min(w for e, w in pts if e <= target)
+    for (e0, w0), (e1, w1) in zip(pts, pts[1:]):
+        if e0 > target >= e1:
+            f = math.log(target / e0) / math.log(e1 / e0)
+            return "≈", math.exp(math.log(w0) + f * math.log(w1 / w0))
+    return "≤", min(w for e, w in pts if e <= target)
+
+
+def markdown(path):
+    rows = read(path)
+    if not rows:
+        return
+    scene = rows[0]["scene"]
+    if "divisor" in rows[0]:
+        print(f"\n**{scene}**: every attempt (dt = t_end / N, coarsest first)\n")
+        print("| stabilisation | strain | N | Δt [s] | status | Newton | wall [s] | message |")
+        print("|---|---|---|---|---|---|---|---|")
+        for r in rows:
+            msg = (r.get("message") or "").replace("|", "/")[:110]
+            print(f"| {STAB[r['stabilisation']]} | {100 * num(r, 'param:loading.strain'):g} % | "
+                  f"{r['divisor']} | {num(r, 'dt'):g} | {r['status']} | {r['newton_iterations']} | "
+                  f"{num(r, 'wall_s'):.1f} | {msg} |")
+        return
+    groups = collections.defaultdict(list)
+    for r in rows:
+        groups[group_key(r)].append(r)
+    for key, gr in groups.items():
+        label = SCENE.get(scene, scene) + "".join(f", {k.split(':')[-1]} = {v}" for k, v in key)
+        print(f"\n**{label}**: every run\n")
+        print("| stabilisation | method | parameter | e_p | e_F (max) | e_F (end) | e_u | wall [s] "
+              "| factorisations | steps | Newton | error-test failures | status |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for r in gr:
+            name = "reference" if r["method"] == "reference" else (
+                "reference check" if r["method"] == "reference_check" else
+                dict((m, lab) for m, lab, _ in METHODS)[r["method"]])
+            print(f"| {STAB[r['stabilisation']]} | {name} | {param_text(r)} | "
+                  f"{fmt(num(r, 'error_pressure'))} | {fmt(num(r, 'error_reaction'))} | "
+                  f"{fmt(num(r, 'error_reaction_end'))} | {fmt(num(r, 'error_displacement'))} | "
+                  f"{num(r, 'wall_s'):.3g} | {r['factorizations']} | {r['steps']} | "
+                  f"{r['newton_iterations']} | {r['error_test_failures'] or '—'} | {r['status']} |")
+        print(f"\n**{label}**: cheapest run (wall) reaching a pressure time error\n")
+        print("| stabilisation | target | backward Euler, fixed Δt | adaptive backward Euler | "
+              "BDF (IDA, orders 1–5) | BE / BDF at the target: wall; Newton (log-log interpolated; ≥: "
+              "BDF's loosest run is already below the target) |")
+        print("|---|---|---|---|---|---|")
+        for stab in STAB:
+            sr = [r for r in gr if r["stabilisation"] == stab and r["status"] == "completed"]
+            if not sr:
+                continue
+            for target in (1e-3, 1e-4):
+                cells, walls = [], {}
+                for method, _, _ in METHODS:
+                    ok = [r for r in sr if r["method"] == method
+                          and num(r, "error_pressure") <= target]
+                    if not ok:
+                        cells.append("not reached")
+                        continue
+                    best = min(ok, key=lambda r: num(r, "wall_s"))
+                    walls[method] = num(best, "wall_s")
+                    cells.append(f"{walls[method]:.3g} s ({param_text(best)}: e_p "
+                                 f"{num(best, 'error_pressure'):.1e}, {best['factorizations']} fact., "
+                                 f"{best['steps']} steps, {best['newton_iterations']} Newton)")
+                ratio = []
+                for cost, unit in (("wall_s", " s"), ("newton_iterations", " Newton")):
+                    be = wall_at([r for r in sr if r["method"] == "backward_euler"], target, cost)
+                    bdf = wall_at([r for r in sr if r["method"] == "bdf"], target, cost)
+                    if be and bdf:
+                        ratio.append(f"{be[1]:.3g}{unit} / {bdf[1]:.3g}{unit} = "
+                                     f"{'≥ ' if bdf[0] == '≤' and be[0] == '≈' else ''}"
+                                     f"{be[1] / bdf[1]:.2g}")
+                ratio = "; ".join(ratio) or "—"
+                print(f"| {STAB[stab]} | {target:g} | " + " | ".join(cells) + f" | {ratio} |")
 
 
 def main():
@@ -154,7 +268,12 @@ def main():
     ap.add_argument("-o", "--output", type=pathlib.Path, default=ROOT / "docs/figures/integrators")
     ap.add_argument("--second", choices=["reaction", "displacement"], default=None,
                     help="second measure (default: reaction, or displacement when no reaction)")
+    ap.add_argument("--markdown", action="store_true", help="print Markdown tables, no figures")
     args = ap.parse_args()
+    if args.markdown:
+        for path in args.csv:
+            markdown(path)
+        return
     args.output.mkdir(parents=True, exist_ok=True)
     for path in args.csv:
         rows = read(path)

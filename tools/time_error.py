@@ -7,7 +7,8 @@ For each RUN (an output folder of `biphasic run`), over the output times it shar
 REFERENCE:
   pressure: max over times and probe-line nodes of |p - p_ref|, divided by max |p_ref|;
   reaction: max over times of |F_z - F_z,ref| of the first boundary in reactions.csv, divided by
-            max |F_z,ref| (when both runs wrote reactions.csv);
+            max |F_z,ref| (when both runs wrote reactions.csv); reaction_end: the same at the last
+            shared time only;
   displacement: max over times and probe-line nodes of |u_z - u_z,ref|, divided by max |u_z,ref|.
 --every T keeps only the shared output times that are multiples of T (compare runs with
 different output intervals at the same instants).
@@ -75,12 +76,13 @@ def time_error(ref, run, every=None):
     uscale = max(abs(u) for t in times for u in ur[t]) or 1.0
     e_u = max(abs(a - b) for t in times for a, b in zip(uu[t], ur[t])) / uscale
     fr, fu = read_reaction(ref), read_reaction(run)
-    e_f = None
+    e_f = e_f_end = None
     if fr and fu:
         ft = sorted(t for t in set(fr) & set(fu) - {0.0} if on_grid(t, every))
         fscale = max(abs(fr[t]) for t in ft) or 1.0
         e_f = max(abs(fu[t] - fr[t]) for t in ft) / fscale
-    return {"pressure": e_p, "reaction": e_f, "displacement": e_u, "times": len(times),
+        e_f_end = abs(fu[ft[-1]] - fr[ft[-1]]) / fscale
+    return {"pressure": e_p, "reaction": e_f, "reaction_end": e_f_end, "displacement": e_u, "times": len(times),
             "first_time": times[0], "last_time": times[-1]}
 
 

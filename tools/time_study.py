@@ -230,6 +230,7 @@ def time_error_rows(s_toml, base, groups, out):
                 try:
                     e = time_error.time_error(str(ref_dir), str(run_dir), every)
                     row.update({"error_pressure": e["pressure"], "error_reaction": e["reaction"],
+                                "error_reaction_end": e["reaction_end"],
                                 "error_displacement": e["displacement"],
                                 "compared_times": e["times"]})
                 except SystemExit as err:
