@@ -8,8 +8,8 @@ For a time-error table (columns error_pressure, ...), writes per scene:
                                iterations; one curve per method, one column per stabilisation
   time_<scene>_<second>.png    time error of the platen reaction (or of the settlement u_z)
                                against wall time and Newton iterations
-For a failure table (column divisor): failure_<scene>.png, the largest converging fixed step
-against the applied strain, with and without stabilisation.
+For a failure table (column divisor): the largest converging fixed step
+against the applied strain, with and without stabilisation (<scene>.png).
 PNG at 200 dpi into DIR (default: docs/figures/integrators).
 --markdown prints the tables of docs/integrators.md instead: every run, and for each scene and
 stabilisation the cheapest run of each method whose pressure time error is <= 1e-3 and 1e-4.
@@ -88,6 +88,11 @@ def time_error_figure(rows, measure, costs, out, name, title):
                 pts = [(x, y) for x, y in pts if x > 0 and y > 0 and not math.isnan(x + y)]
                 if pts:
                     ax.plot(*zip(*pts), label=label, ms=5, lw=1.2, **style)
+                cut = [(num(r, cost), num(r, col)) for r in sr if r["method"] == method
+                       and r["status"] == "completed" and num(r, "cutbacks") > 0]
+                if cut:  # steps cut back (failed Newton / inverted element): open markers
+                    ax.plot(*zip(*cut), ls="none", marker=style["marker"], ms=5, mfc="white",
+                            mec=style["color"], label="backward Euler: some steps cut back")
             if check and check[0] > 0:
                 ax.axhline(check[0], color="grey", lw=0.8, ls=":",
                            label="reference check (rtol 1e-7 vs 1e-8)")
@@ -106,10 +111,17 @@ def time_error_figure(rows, measure, costs, out, name, title):
             panel_letter(ax, letter)
             letter += 1
     handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=len(labels), frameon=False,
+    for ax in axes.flat:  # the union of the panels' entries, in order
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            if lab not in labels:
+                handles.append(h)
+                labels.append(lab)
+    ncol = 3
+    fig.legend(handles, labels, loc="lower center", ncol=ncol, frameon=False,
                bbox_to_anchor=(0.5, 0.0))
     fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0.05, 1, 0.97))
+    nrows = -(-len(labels) // ncol)
+    fig.tight_layout(rect=(0, (0.035 * nrows + 0.01) * 3 / (len(costs) + 1), 1, 0.97))
     path = out / name
     fig.savefig(path, dpi=200)
     plt.close(fig)
@@ -156,7 +168,7 @@ def failure_figure(rows, out, name):
         ax.legend(frameon=False, fontsize=9)
         panel_letter(ax, i)
     fig.suptitle("Backward Euler without cut-back, mesh 1, k = 1e-3, 2.5 µm/s "
-                 "(Δt = t_end / N, N = 1, 2, 4, ...; arrow: t_end itself converged)", fontsize=10)
+                 "(Δt = t_end / N, N = 1, 2, 3, 4, 6, 8, 12, 16; arrow: t_end itself converged)", fontsize=10)
     fig.tight_layout()
     path = out / name
     fig.savefig(path, dpi=200)
@@ -227,6 +239,22 @@ def markdown(path):
                   f"{fmt(num(r, 'error_reaction_end'))} | {fmt(num(r, 'error_displacement'))} | "
                   f"{num(r, 'wall_s'):.3g} | {r['factorizations']} | {r['steps']} | "
                   f"{r['newton_iterations']} | {r['error_test_failures'] or '—'} | {r['status']} |")
+        at = [k for k in gr[0] if k.startswith("overshoot@")]
+        if at:
+            print(f"\n**{label}**: overshoot (max_line p − p_mid) / p_mid at the first "
+                  "output and at fixed times\n")
+            print("| stabilisation | method | parameter | first output t [s] | overshoot there | "
+                  + " | ".join(f"overshoot at t = {k.split('@')[1]} s" for k in at) + " |")
+            print("|---|---|---|---|---|" + "---|" * len(at))
+            for r in gr:
+                name = "reference" if r["method"] == "reference" else (
+                    "reference check" if r["method"] == "reference_check" else
+                    dict((m, lab) for m, lab, _ in METHODS)[r["method"]])
+                cells = [fmt(num(r, k), 4) if not math.isnan(num(r, k)) else "—" for k in at]
+                print(f"| {STAB[r['stabilisation']]} | {name} | {param_text(r)} | "
+                      f"{num(r, 't_first'):g} | {num(r, 'overshoot_first'):.5f} | "
+                      + " | ".join(c if c == "—" else f"{num(r, k):.5f}" for c, k in zip(cells, at))
+                      + " |")
         print(f"\n**{label}**: cheapest run (wall) reaching a pressure time error\n")
         print("| stabilisation | target | backward Euler, fixed Δt | adaptive backward Euler | "
               "BDF (IDA, orders 1–5) | BE / BDF at the target: wall; Newton (log-log interpolated; ≥: "
@@ -281,7 +309,7 @@ def main():
             continue
         scene = rows[0]["scene"]
         if "divisor" in rows[0]:
-            failure_figure(rows, args.output, f"failure_{scene}.png")
+            failure_figure(rows, args.output, f"{scene}.png")
             continue
         groups = collections.defaultdict(list)
         for r in rows:
