@@ -116,7 +116,7 @@ def time_error_figure(rows, measure, costs, out, name, title):
             if lab not in labels:
                 handles.append(h)
                 labels.append(lab)
-    ncol = 3
+    ncol = 3 if len(stabs) >= 3 else 2
     fig.legend(handles, labels, loc="lower center", ncol=ncol, frameon=False,
                bbox_to_anchor=(0.5, 0.0))
     fig.suptitle(title)
@@ -318,8 +318,9 @@ def main():
             suffix = "".join(f"_{k.split('.')[-1]}{v}" for k, v in key)
             label = SCENE.get(scene, scene) + "".join(
                 f", {k.split(':')[-1]} = {v}" for k, v in key)
-            second = args.second or ("reaction" if any(r.get("error_reaction") for r in gr)
-                                     else "displacement")
+            # Terzaghi: the bottom reaction equals the load at every instant; use the settlement
+            second = args.second or ("displacement" if scene == "terzaghi" or
+                                     not any(r.get("error_reaction") for r in gr) else "reaction")
             time_error_figure(gr, "pressure", ["wall_s", "factorizations", "newton_iterations"],
                               args.output, f"time_{scene}{suffix}_pressure.png",
                               f"Time error of the pressure against cost: {label}")
