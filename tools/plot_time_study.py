@@ -101,7 +101,9 @@ def time_error_figure(rows, measure, costs, out, name, title):
                 ax.set_xlim(left=0)
             else:
                 ax.set_xscale("log")
-                ax.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+                lo, hi = ax.get_xlim()
+                subs = (1.0, 2.0, 5.0) if hi / lo < 300 else (1.0,)  # wide ranges: decades only
+                ax.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=subs))
                 ax.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda x, _: f"{x:g}"))
                 ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
             ax.set_yscale("log")
