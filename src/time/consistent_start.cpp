@@ -57,9 +57,15 @@ class RegularisedSystem {
     const SaddlePointStructure saddle = problem.saddle_point_structure([] {
       return std::pair{1.0, 0.0};
     });
-    // A few solves with no Newton iteration after them: double-precision factors.
+    // A few solves with no Newton iteration after them: double-precision factors. The
+    // regularised matrix is GLS-dominated (a step of ε ≪ the GLS time), where the iterative
+    // solver's multigrid fails: a direct factorisation then, once per start.
     LinearSolverConfig exact = solver;
     exact.precision = FactorPrecision::Double;
+    if (exact.type == LinearSolverType::Iterative) {
+      exact.type = LinearSolverType::Mumps;
+      exact.ordering = Ordering::Metis;
+    }
     ls_ = make_linear_solver(exact, ctx_, stats ? stats : &own_stats_, fill_order(exact, pat),
                              &saddle);
     const Index n = problem.size();
