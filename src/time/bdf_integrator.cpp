@@ -356,8 +356,8 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       ++next_output;
     }
     if (flag == IDA_TSTOP_RETURN) {
-      const bool kink = stop + 1 < stops.size() &&
-                        std::abs(tret - stops[stop]) <= 1e-12 * std::max(1.0, t_end);
+      const bool kink =
+          stop + 1 < stops.size() && std::abs(tret - stops[stop]) <= 1e-12 * std::max(1.0, t_end);
       if (kink) {
         // A kink of a load curve: restart from the values consistent after it.
         std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());

@@ -209,8 +209,9 @@ INSTANTIATE_TEST_SUITE_P(StabilisationsAndScenes, ConsistentStartEveryRow,
 // A ramp then a hold with GLS: BDF starts and restarts at the kink from consistent values (the
 // pressure jumps there: the GLS term's volumetric rate stops with the platen), with the full
 // residual at each start ≤ 1e-10 of the load (IDA leaves the algebraic constraints out of
-// balance by its own tolerance at the kink; the start corrects them); the end state agrees with backward Euler at
-// small steps. (Without the consistent start BDF failed at t = 0 on this kind of case.)
+// balance by its own tolerance at the kink; the start corrects them); the end state agrees with
+// backward Euler at small steps. (Without the consistent start BDF failed at t = 0 on this kind of
+// case.)
 TEST(Bdf, RestartsConsistentlyAfterAKinkWithGls) {
   Config cfg = confined_column_config(Stabilisation::Gls);
   cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {10.0, 0.5}}};

@@ -116,8 +116,8 @@ struct BdfConfig {
   /// First step [s] (also after a restart when restart_from_last_step is off); 0 = 1 % of the
   /// first output interval (or of the time to the first load-curve kink if shorter).
   double initial_step = 0.0;
-  double max_step = 0.0;     ///< [s]; 0 = unlimited
-  long max_steps = 100000;   ///< internal steps allowed between two outputs
+  double max_step = 0.0;    ///< [s]; 0 = unlimited
+  long max_steps = 100000;  ///< internal steps allowed between two outputs
   double max_growth = 2.0;  ///< largest step-size ratio between steps (IDASetEtaMax) [-]
   /// Relative change of c_j = α/h that forces a new factorisation (IDASetDeltaCjLSetup): with
   /// shift_correction, 0.9 (c_j may drift by a factor 19 on one factorisation).
