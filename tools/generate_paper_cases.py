@@ -4,7 +4,7 @@
 sizes, with and without GLS. Other permeabilities, time steps and rates are --set overrides."""
 import pathlib
 
-MESHES = {1: 1.3, 2: 0.98, 3: 0.73, 4: 0.57}  # characteristic length [mm] (DESIGN.md section 4)
+MESHES = {1: 1.3, 2: 0.98, 3: 0.73, 4: 0.57}  # characteristic length [mm] (docs/paper_reference.md)
 
 TEMPLATE = """\
 # The paper's reference loading on mesh {mesh} (lc = {lc} mm), k = 1e-3, {stab_text}.

@@ -27,6 +27,7 @@
 #include "biphasic/physics/volume_balance.hpp"
 #include "biphasic/study/measures.hpp"
 #include "biphasic/study/oscillation_advisor.hpp"
+#include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic {
@@ -324,8 +325,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   std::vector<double> y(problem.size(), 0.0);
   const double t_start = 0.0;
   problem.apply_dirichlet(t_start, y.data(), nullptr);
-  if (config.time.integrator == Integrator::BackwardEuler)
+  if (auto* be = dynamic_cast<BackwardEuler*>(&integrator)) {
     balance = std::make_unique<VolumeBalance>(problem, y);
+    // Step by step, so that sub-steps after a cut-back each count with their own Δt.
+    be->set_sub_step_hook(
+        [&balance](double t, double dt, const std::vector<double>& ys,
+                   const std::vector<double>& ydots) { balance->add_step(t, dt, ys, ydots); });
+  }
   write_output(t_start, y, std::vector<double>(y.size(), 0.0));
   const int every = std::max(1, config.output.every);
   const int planned =
@@ -346,7 +352,6 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
                        {"residual_u", info.residual_u},
                        {"residual_p", info.residual_p}};
     const bool output_now = info.step % every == 0 || info.step == planned;
-    if (balance) balance->add_step(info.t, info.dt, ys, ydots);
     std::string mid;
     if (output_now) {
       const LineMeasures m = write_output(info.t, ys, ydots);

@@ -269,6 +269,10 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       std::copy(yv, yv + n, y.begin());
       t = t_next;
       ++sub_steps;
+      if (sub_step_hook_) {
+        m.rate(yv);
+        sub_step_hook_(t, m.dt, y, m.ydot);
+      }
       ++stats_.steps;
       if (level > 0 && ++successes >= kGrowAfter) {
         --level;

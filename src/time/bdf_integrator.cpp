@@ -11,7 +11,6 @@
 #include <tuple>
 
 #include "biphasic/time/backward_euler.hpp"
-#include "biphasic/time/consistent_start.hpp"
 
 namespace biphasic {
 
@@ -246,8 +245,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       }
     return default_first_step(horizon, horizon);
   };
-  const double allowed_imbalance =
-      absolute_tolerances(problem, bdf).first * problem.stiffness_scale();
+  const double allowed_imbalance = atol_displacement_ * problem.stiffness_scale();
   double last_step = 0.0;
   // IDA from a consistent (y, ẏ) at t: created on the first call, re-initialised after a kink.
   auto start = [&](double t, std::vector<double>& ys) {

@@ -188,7 +188,6 @@ ConsistentState consistent_pass(BiphasicProblem& problem, double t, const std::v
       if (max_abs(r) <= target) break;
       const std::vector<double> dz = system.solve(r);
       for (Index i = 0; i < n; ++i) z[i] += dz[i];
-      ++out.refinements;
     }
     out.y = y;
     out.ydot = z;
@@ -250,7 +249,6 @@ ConsistentState consistent_start(BiphasicProblem& problem, double t, const std::
     ConsistentState next =
         consistent_pass(problem, t, corrected, solver, stats, tolerance, correction);
     if (!(next.residual_u < out.residual_u)) break;
-    next.refinements += out.refinements;
     out = std::move(next);
   }
   return out;

@@ -1,4 +1,4 @@
-// Line measures (DESIGN.md §5) on synthetic profiles: overshoot and undershoot against p_mid,
+// Line measures (docs/formulation.md, "Measures") on synthetic profiles: overshoot and undershoot against p_mid,
 // and the oscillation measure, which flags non-monotonicity and not a physical maximum.
 #include <gtest/gtest.h>
 

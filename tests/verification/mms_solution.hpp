@@ -8,7 +8,7 @@
 //   p(X, t) = t P(X),  P = P₀ cos(1.3x) sin(0.9y + 0.5) e^{0.4z}
 // With A = 0.08 mm the displacement gradient reaches about 0.15 at t = 1 (J from about 0.9 to
 // 1.1): a genuinely finite deformation. The loads that make them exact, for the model of
-// DESIGN.md §1–2 written out again here (independently of src/material):
+// The model of docs/formulation.md written out again here (independently of src/material):
 //   b = −Div P,   P = μ(F − F⁻ᵀ) + λ ln J F⁻ᵀ − p J F⁻ᵀ,  F = I + ∇₀u
 //   s = J̇ − Div Q, Q = k J C⁻¹ ∇₀p                         (mass balance J̇ + Div W = s, W = −Q)
 // The divergences are complex-step derivatives of the closed-form P and Q (exact to rounding:

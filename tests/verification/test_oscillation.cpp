@@ -1,5 +1,5 @@
 // Spurious pressure oscillation on the first backward-Euler step after a step load
-// (cases/verification/oscillation; DESIGN.md §3, Vermeer & Verruijt 1981): the overshoot of the
+// (cases/verification/oscillation; Vermeer & Verruijt 1981): the overshoot of the
 // unstabilised P2/P1 pressure above the load q as a function of r = c Δt / h², where it
 // vanishes on this 3D mesh, and how much GLS and the flux perturbation damp it.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Element kernel of the finite-strain biphasic mixture (DESIGN.md §2, paper §2–3):
+// Element kernel of the finite-strain biphasic mixture (docs/formulation.md, the paper §2–3):
 //   R_u = ∫Ω₀ ∇₀f : (P_eff − p J F⁻ᵀ) dX + ∫Ω₀ c_e (F⁻ᵀ : ∇₀f) J̇ dX        (momentum + GLS)
 //   R_p = ∫Ω₀ g J̇ dX + ∫Ω₀ k J (F⁻ᵀ∇₀p)·(F⁻ᵀ∇₀g) dX                      (mass, Darcy)
 // with J̇ = J F⁻ᵀ : ∇₀u̇ (incremental form) or, for backward Euler, J̇ = (J − Jₙ)/Δt with

@@ -1,4 +1,4 @@
-// The semidiscrete biphasic system F(t, y, ẏ) = 0 on a mesh (DESIGN.md §2), with its
+// The semidiscrete biphasic system F(t, y, ẏ) = 0 on a mesh (docs/formulation.md), with its
 // Jacobian dF/dy + c_j dF/dẏ assembled into the fixed CSC pattern. Both time integrators
 // drive this one object.
 #pragma once

@@ -1,4 +1,4 @@
-// Oscillation measures on a pressure profile along a line (DESIGN.md §5).
+// Oscillation measures on a pressure profile along a line (docs/formulation.md, "Measures").
 //
 // overshoot and undershoot compare the line's extremes with the pressure at mid-length p_mid.
 // They suit the paper's scene, whose physical profile along the axis rises monotonically from

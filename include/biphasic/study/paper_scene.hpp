@@ -1,4 +1,4 @@
-// The paper's numerical example as a configuration (DESIGN.md §4): quarter cylinder
+// The paper's numerical example as a configuration (docs/paper_reference.md): quarter cylinder
 // R = 18 mm, H = 8 mm, λ = 0.2 MPa, μ = 0.5 MPa, top moved down at 2.5 µm/s to 1 % strain
 // (t = 32 s) in steps of 6.4 s, drained top and bottom, frictionless platens, sealed lateral face.
 #pragma once

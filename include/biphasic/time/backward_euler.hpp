@@ -6,6 +6,7 @@
 // iterations and steps while convergence allows (KINSetMaxSetupCalls, KINSetNoInitSetup).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,12 @@ class BackwardEuler final : public TimeIntegrator {
   /// times t0 + k·time.dt. Throws StepFailure when a step fails at the smallest size.
   void run(double t0, std::vector<double>& y, const StepObserver& observer) override;
   int planned_outputs() const override;
+  /// Called after every converged (sub-)step with its end time t, its length Δt [s], y and
+  /// ẏ = (y − yₙ)/Δt, while the problem still holds that step's settings (e.g. to integrate
+  /// boundary fluxes as backward Euler does, step by step, cut-backs included).
+  using SubStepHook = std::function<void(double t, double dt, const std::vector<double>& y,
+                                         const std::vector<double>& ydot)>;
+  void set_sub_step_hook(SubStepHook hook) { sub_step_hook_ = std::move(hook); }
 
   const IntegratorStats& stats() const override { return stats_; }
   const LinearSolverStats& linear_solver_stats() const override { return ls_stats_; }
@@ -40,6 +47,7 @@ class BackwardEuler final : public TimeIntegrator {
   std::unique_ptr<Impl> impl_;
   IntegratorStats stats_;
   LinearSolverStats ls_stats_;
+  SubStepHook sub_step_hook_;
 };
 
 }  // namespace biphasic

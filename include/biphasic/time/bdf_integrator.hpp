@@ -34,10 +34,6 @@ class BdfIntegrator final : public TimeIntegrator {
   int planned_outputs() const override;
   const IntegratorStats& stats() const override { return stats_; }
   const LinearSolverStats& linear_solver_stats() const override { return ls_stats_; }
-  /// The absolute tolerances in use [mm], [MPa].
-  std::pair<double, double> absolute_tolerances_used() const {
-    return {atol_displacement_, atol_pressure_};
-  }
 
  private:
   struct Impl;

@@ -27,7 +27,6 @@ struct ConsistentState {
   PressureRole pressure = PressureRole::Rate;
   double residual_u = 0.0;  ///< ‖F_u(t₀, y₀, ẏ₀)‖∞ over the free momentum rows [N]
   double residual_p = 0.0;  ///< ‖F_p(t₀, y₀, ẏ₀)‖∞ over the free mass rows [mm³/s]
-  int refinements = 0;      ///< iterative-refinement passes on the exact system
 };
 
 /// The role the problem's stabilisation gives the pressure.
