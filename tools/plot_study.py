@@ -6,7 +6,7 @@ usage: tools/plot_study.py KIND STUDY_DIR [STUDY_DIR ...] -o OUT_DIR
 KIND:
   paper          the paper's figures (study paper_figures [+ paper_figures_mesh4])
   sensitivity    time step and loading rate, backward Euler and BDF (study time_step)
-  work           work-precision: discrepancy at the end against wall time and factorisations
+  work           work-precision: discrepancy at the end against wall time and linear solves
   stability      first-step overshoot over (k, dt) per mesh with the line c dt / h^2 = 1/6
   remedies       cost of accuracy: refinement, GLS, graded mesh (study remedies)
 
@@ -22,6 +22,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import ticker  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -113,10 +114,12 @@ def pressure_panel(ax, runs, label_of, title, with_reference=True):
     ax.legend(fontsize=7)
 
 
-def save(fig, out, name):
+def save(fig, out, name, tight=True):
+    """PNG at 200 dpi (print-ready)."""
     path = pathlib.Path(out) / name
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    if tight:
+        fig.tight_layout()
+    fig.savefig(path, dpi=200)
     plt.close(fig)
     print(path)
 
@@ -222,74 +225,129 @@ def sensitivity(rows, out):
 
 
 def work(rows, out):
+    """Discrepancy and mid-height error at t = 32 s against two cost measures: wall time and
+    linear solves (one back-substitution per Newton iteration). Factorisations are a poor
+    cost axis here: backward Euler reuses one factorisation for the whole run at any Δt and
+    BDF needs three at any rtol, so they are given in the legend instead."""
+    names = {"BE": "backward Euler over Δt", "BDF": "BDF over rtol"}
     groups = {}
     for r in rows:
         if r.get("status") != "completed":
             continue
         integ = "BE" if r["integrator"] == "backward_euler" else "BDF"
         groups.setdefault((mesh_label(r), integ, r["stabilisation"]), []).append(r)
+    colours = {("mesh 1", "gls"): "tab:blue", ("mesh 1", "none"): "tab:orange",
+               ("mesh 2", "gls"): "tab:green", ("mesh 2", "none"): "tab:red"}
     for xkey, xlabel, name in (("wall_s", "wall time [s]", "work_precision_wall.png"),
-                               ("factorizations", "factorisations", "work_precision_factorisations.png")):
-        fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
-        for ax, ykey, ylabel in ((axes[0], "discrepancy", "discrepancy at t = 32 s [%]"),
-                                 (axes[1], "midheight_error", "mid-height error at t = 32 s [%]")):
+                               ("linear_solves", "linear solves (Newton iterations)",
+                                "work_precision_solves.png")):
+        fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.6))
+        for ax, letter, ykey, ylabel in (
+                (axes[0], "a", "discrepancy", "discrepancy at t = 32 s [%]"),
+                (axes[1], "b", "midheight_error", "mid-height error at t = 32 s [%]")):
             for (mesh, integ, stab), rs in sorted(groups.items()):
                 # Along each curve the method's own parameter: BE from large to small dt,
                 # BDF from loose to tight rtol.
                 rs = sorted(rs, key=lambda r: -num(r, "dt") if integ == "BE" else -num(r, "bdf_rtol"))
+                fact = sorted({int(num(r, "factorizations")) for r in rs})
+                ftxt = "/".join(str(f) for f in fact)
                 ax.loglog([num(r, xkey) for r in rs], [100 * num(r, ykey) for r in rs],
-                          ("o-" if integ == "BE" else "s--"), ms=4,
-                          label=f"{mesh}, {integ}, {'GLS' if stab == 'gls' else 'no GLS'}")
-            ax.axhline(1.0, color="grey", lw=0.8)
+                          ("o-" if integ == "BE" else "s--"), ms=3.5, lw=1,
+                          color=colours.get((mesh, stab), None),
+                          label=f"{mesh}, {'GLS' if stab == 'gls' else 'no stabilisation'}, "
+                                f"{names[integ]} ({ftxt} fact.)")
             ax.set_xlabel(xlabel), ax.set_ylabel(ylabel)
             ax.grid(alpha=0.3, which="both")
-        axes[0].legend(fontsize=7)
-        fig.suptitle("work-precision, k = 1e-3 (BE over dt from 32 s to 0.4 s, BDF over rtol "
-                     "from 1e-2 to 1e-5)", fontsize=9)
-        save(fig, out, name)
+            plain_log_ticks(ax.yaxis), plain_log_ticks(ax.xaxis)
+            ax.tick_params(which="minor", labelsize=7)
+            panel_letter(ax, letter)
+        handles, labels = axes[0].get_legend_handles_labels()
+        fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=7, frameon=False)
+        fig.tight_layout(rect=(0, 0.2, 1, 1))
+        save(fig, out, name, tight=False)
+
+
+def panel_letter(ax, letter):
+    ax.set_title(f"({letter})", loc="left", fontsize=10, fontweight="bold")
+
+
+def plain_log_ticks(axis):
+    """Tick labels as plain numbers (6, 8, 10) instead of 6×10⁰ on a log axis; minor ticks
+    labelled at 2, 3, 5 per decade, or all of them when the axis spans less than a decade."""
+    lo, hi = axis.get_view_interval()
+    narrow = lo > 0 and hi / lo < 10
+    axis.set_major_formatter(ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+
+    def minor(v, _):
+        lead = round(v / 10 ** math.floor(math.log10(v)), 6) if v > 0 else 0
+        return f"{v:g}" if narrow or lead in (2, 3, 5) else ""
+
+    axis.set_minor_formatter(ticker.FuncFormatter(minor))
 
 
 def stability(rows, out):
+    """First-step overshoot on a (Δt, k) grid per mesh, one cell per run with its value, and
+    where r = c Δt / h² = 1/6 falls in each row (c = k (λ + 2μ), h the element length on the
+    axis). The grid is drawn by index, not on log axes, so that close Δt (6.4 and 8 s) do not
+    overlap."""
     meshes = sorted({mesh_label(r) for r in rows})
     for stab in ("none", "gls"):
         cols = min(len(meshes), 2)
         nrows = (len(meshes) + cols - 1) // cols
-        fig, axes = plt.subplots(nrows, cols, figsize=(5.2 * cols, 4.2 * nrows), squeeze=False)
+        fig, axes = plt.subplots(nrows, cols, figsize=(3.6 * cols + 0.9, 3.0 * nrows + 0.5),
+                                 squeeze=False)
         flat = [a for row in axes for a in row]
         for ax in flat[len(meshes):]:
             ax.set_visible(False)
-        sc = None
-        for ax, mesh in zip(flat, meshes):
+        im = None
+        for i, (ax, mesh) in enumerate(zip(flat, meshes)):
             sel = [r for r in rows if mesh_label(r) == mesh and r["stabilisation"] == stab
                    and r.get("status") == "completed"]
             if not sel:
                 continue
-            dts = [num(r, "dt") for r in sel]
-            ks = [num(r, "permeability") for r in sel]
-            over = [100 * num(r, "overshoot") for r in sel]
-            sc = ax.scatter(dts, ks, c=over, s=420, marker="s", cmap="magma_r", vmin=0, vmax=15,
-                            edgecolors="grey", linewidths=0.5)
-            for d, k, o in zip(dts, ks, over):
-                ax.text(d, k, f"{o:.0f}", ha="center", va="center", fontsize=7,
-                        color="white" if o > 9 else "black")
-            ax.set_xscale("log"), ax.set_yscale("log")
-            ax.set_xlim(min(dts) / 1.8, max(dts) * 1.8), ax.set_ylim(min(ks) / 1.8, max(ks) * 1.8)
-            # c dt / h^2 = 1/6 with c = k (lambda + 2 mu): k = h^2 / (6 (lambda + 2 mu) dt).
+            dts = sorted({num(r, "dt") for r in sel})
+            ks = sorted({num(r, "permeability") for r in sel})
+            grid = [[math.nan] * len(dts) for _ in ks]
+            for r in sel:
+                grid[ks.index(num(r, "permeability"))][dts.index(num(r, "dt"))] = \
+                    100 * num(r, "overshoot")
+            im = ax.imshow(grid, origin="lower", cmap="magma_r", vmin=0, vmax=15, aspect="auto")
+            for a, row in enumerate(grid):
+                for b, o in enumerate(row):
+                    if math.isnan(o):
+                        continue
+                    text = "0" if o < 0.05 else (f"{o:.1f}" if o < 10 else f"{o:.0f}")
+                    ax.text(b, a, text, ha="center", va="center", fontsize=7,
+                            color="white" if o > 9 else "black")
+            ax.set_xticks(range(len(dts)), [f"{d:g}" for d in dts])
+            ax.set_yticks(range(len(ks)), [f"{k:g}" for k in ks])
+            # Threshold Δt* = h² / (6 (λ + 2μ) k) per row, placed by log interpolation between
+            # the columns (a marker outside the grid when Δt* lies beyond it).
             h, m = num(sel[0], "h_line"), num(sel[0], "lambda") + 2 * num(sel[0], "mu")
-            xs = [min(dts) / 1.8 * (max(dts) / min(dts) * 3.24) ** (i / 50) for i in range(51)]
-            ax.plot(xs, [h * h / (6 * m * d) for d in xs], "c-", lw=2, label="c Δt / h² = 1/6")
+            xs, ys = [], []
+            for a, k in enumerate(ks):
+                d = h * h / (6 * m * k)
+                x = (math.log(d) - math.log(dts[0])) / (math.log(dts[-1]) - math.log(dts[0]))
+                pos = [math.log(v) for v in dts]
+                j = next((j for j in range(len(dts) - 1) if pos[j] <= math.log(d) <= pos[j + 1]),
+                         None)
+                if j is None:
+                    x = -0.5 if d < dts[0] else len(dts) - 0.5
+                else:
+                    x = j + (math.log(d) - pos[j]) / (pos[j + 1] - pos[j])
+                xs.append(x), ys.append(a)
+            ax.plot(xs, ys, "c-", lw=2, marker="|", ms=10, label="c Δt / h² = 1/6")
+            ax.set_xlim(-0.5, len(dts) - 0.5), ax.set_ylim(-0.5, len(ks) - 0.5)
             ax.set_xlabel("Δt [s]"), ax.set_ylabel("k [mm⁴/(N s)]")
             ax.set_title(f"{mesh} (h = {h:.2f} mm on the axis)", fontsize=9)
-            ax.legend(fontsize=7, loc="lower left")
-        fig.suptitle(f"first backward-Euler step: overshoot [%], {'GLS' if stab == 'gls' else 'no GLS'}",
-                     fontsize=10)
+            ax.legend(fontsize=7, loc="upper right", framealpha=0.8)
+            panel_letter(ax, "abcd"[i])
+        fig.suptitle(f"first backward-Euler step: pressure overshoot [% of p_mid], "
+                     f"{'GLS' if stab == 'gls' else 'no stabilisation'}", fontsize=10)
         fig.tight_layout()
-        if sc is not None:
-            fig.colorbar(sc, ax=flat, shrink=0.85, label="overshoot [%]")
-        path = pathlib.Path(out) / f"stability_map_{stab}.png"
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        print(path)
+        if im is not None:
+            fig.colorbar(im, ax=flat, shrink=0.85, label="overshoot [%]")
+        save(fig, out, f"stability_map_{stab}.png", tight=False)
 
 
 def remedies(rows, out):
