@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "biphasic/app/probes.hpp"
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/time/time_integrator.hpp"
@@ -20,6 +21,7 @@ constexpr const char* kUsage = R"(usage:
 run: solves the finite-strain biphasic problem described by CASE.toml and writes, as the run
 goes, into DIR (default: results/<case name>):
   line.csv       t, s, x, y, z, ux, uy, uz, p on the probe line at every output time
+  probe_NAME.csv the same on each [[probe]] line
   fields.h5      displacement (P2 nodes) and pressure per output time; open fields.xdmf in ParaView
   summary.json   resolved configuration, mesh size, per-step records, counters, timings
 --set overrides any case-file key, e.g. --set material.permeability=1e-2
@@ -58,7 +60,10 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   if (validate_only) {
+    // Probe points must lie in the body: this builds the mesh.
+    const std::vector<std::string> probes = biphasic::check_probes(config);
     std::cout << case_path << ": valid\n";
+    for (const std::string& line : probes) std::cout << "  " << line << "\n";
     return 0;
   }
   options.output_dir =

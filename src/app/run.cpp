@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "biphasic/app/probes.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
@@ -154,6 +155,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const Mesh mesh = build_mesh(config, out_dir.string(), &mesh_from_cache);
   const double mesh_seconds = seconds_since(t0);
   check_boundaries(config, mesh.boundary_names());
+  std::vector<Probe> probes = build_probes(config, mesh);
 
   t0 = Clock::now();
   BiphasicProblem problem(mesh, config);
@@ -205,22 +207,15 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   summary["advisor"] = to_json(advice);
   for (const std::string& line : advice_lines(advice)) say(line);
 
-  // Observers: probe line, fields, per-step records.
-  const Point a = config.output.line_start, b = config.output.line_end;
-  const double diag = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
-  const LineProbe probe(mesh, a, b, 1e-6 * std::max(diag, 1.0));
-  std::unique_ptr<LineCsvWriter> line_csv;
-  if (config.output.line)
-    line_csv = std::make_unique<LineCsvWriter>((out_dir / "line.csv").string());
+  // Observers: probes, fields, per-step records.
+  ProbeRecorder probe_csv(std::move(probes), problem, out_dir.string());
   std::unique_ptr<FieldWriter> fields;
   if (config.output.fields)
     fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
   std::unique_ptr<ReactionCsv> reaction_csv;
   if (!config.output.reactions.empty())
     reaction_csv = std::make_unique<ReactionCsv>(out_dir / "reactions.csv");
-  const DrainedEnds drained = drained_ends(probe, problem);
-  summary["line"] = {
-      {"start", a}, {"end", b}, {"nodes", probe.size()}, {"drained_ends", to_string(drained)}};
+  probe_csv.describe(summary);
   summary["steps"] = nlohmann::json::array();
   summary["outputs"] = nlohmann::json::array();
 
@@ -233,10 +228,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   };
   auto write_output = [&](double t, const std::vector<double>& y, const std::vector<double>& ydot) {
     split(y);
-    if (line_csv) line_csv->write(t, probe, u, p);
+    const std::optional<LineMeasures> m = probe_csv.write(t, u, p);
     if (fields) fields->write(t, u, p);
-    const LineMeasures m = line_measures(probe.s(), probe.pressure(p), drained);
-    nlohmann::json o = measures_json(m);
+    nlohmann::json o = m ? measures_json(*m) : nlohmann::json::object();
     o["t"] = t;
     if (reaction_csv) {
       const auto& names = config.output.reactions;
@@ -354,12 +348,13 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const bool output_now = info.step % every == 0 || info.step == planned;
     std::string mid;
     if (output_now) {
-      const LineMeasures m = write_output(info.t, ys, ydots);
-      rec["p_mid"] = m.p_mid;
-      char buf[128];
-      std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f", m.p_mid,
-                    m.defined ? m.overshoot : 0.0, m.defined ? m.oscillation : 0.0);
-      mid = buf;
+      if (const std::optional<LineMeasures> m = write_output(info.t, ys, ydots)) {
+        rec["p_mid"] = m->p_mid;
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f",
+                      m->p_mid, m->defined ? m->overshoot : 0.0, m->defined ? m->oscillation : 0.0);
+        mid = buf;
+      }
     }
     summary["steps"].push_back(rec);
     // Rewriting the whole summary after every step costs time quadratic in the steps (12 s of a

@@ -305,6 +305,7 @@ struct KnownPaths {
   std::set<std::string> tables;             ///< sections (and subsections) of global keys
   std::vector<std::string> candidates;      ///< everything a top-level key may be, for suggestions
   std::vector<std::string> boundary_names;  ///< keys of a [[boundary]] entry
+  std::vector<std::string> probe_names;     ///< keys of a [[probe]] entry
 };
 
 const KnownPaths& known_paths() {
@@ -323,6 +324,8 @@ const KnownPaths& known_paths() {
     k.candidates.push_back("curves");
     k.candidates.push_back("boundary");
     for (const auto& key : boundary_keys()) k.boundary_names.push_back(key.path);
+    k.candidates.push_back("probe");
+    for (const auto& key : probe_keys()) k.probe_names.push_back(key.path);
     return k;
   }();
   return known;
@@ -341,7 +344,8 @@ void check_unknown_keys(const toml::table& table, const std::string& prefix, Pro
   for (const auto& [k, node] : table) {
     const std::string path =
         prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-    if (known.leaves.count(path) > 0 || path == "curves" || path == "boundary") continue;
+    if (known.leaves.count(path) > 0 || path == "curves" || path == "boundary" || path == "probe")
+      continue;
     if (known.tables.count(path) > 0) {
       if (const auto* sub = node.as_table()) {
         check_unknown_keys(*sub, path, problems);
@@ -380,31 +384,33 @@ std::string apply_override(toml::table& root, const std::string& argument, Probl
   const toml::node& value = *parsed.get("v");
   const auto& known = known_paths();
 
-  if (key.rfind("boundary[", 0) == 0) {
+  // Entries of an array of tables: boundary[i].key, probe[i].key.
+  for (const auto& [array_name, names] : {std::pair{std::string("boundary"), &known.boundary_names},
+                                          std::pair{std::string("probe"), &known.probe_names}}) {
+    if (key.rfind(array_name + "[", 0) != 0) continue;
     const auto close = key.find(']');
+    const std::size_t first = array_name.size() + 1;
     const std::string index_text =
-        close == std::string::npos ? std::string{} : key.substr(9, close - 9);
+        close == std::string::npos ? std::string{} : key.substr(first, close - first);
     std::size_t index = 0;
     const auto [end, error] =
         std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
     if (index_text.empty() || error != std::errc{} ||
         end != index_text.data() + index_text.size()) {
-      return where + "'" + key + "' needs boundary[i].key with i a number from 0";
+      return where + "'" + key + "' needs " + array_name + "[i].key with i a number from 0";
     }
     const std::string name =
         close + 1 < key.size() && key[close + 1] == '.' ? key.substr(close + 2) : std::string{};
-    const std::string entry = "boundary[" + std::to_string(index) + "]";
-    if (std::find(known.boundary_names.begin(), known.boundary_names.end(), name) ==
-        known.boundary_names.end()) {
+    const std::string entry = array_name + "[" + std::to_string(index) + "]";
+    if (std::find(names->begin(), names->end(), name) == names->end()) {
       const std::string full = entry + "." + name;
-      return where +
-             unknown_key_message(full, suggest(full, prefixed(entry + ".", known.boundary_names)));
+      return where + unknown_key_message(full, suggest(full, prefixed(entry + ".", *names)));
     }
-    auto* array = root["boundary"].as_array();
+    auto* array = root[array_name].as_array();
     const std::size_t count = array == nullptr ? 0 : array->size();
     if (index >= count) {
       return where + "index " + std::to_string(index) + " is out of range (the case has " +
-             std::to_string(count) + " [[boundary]] entr" + (count == 1 ? "y)" : "ies)");
+             std::to_string(count) + " [[" + array_name + "]] entr" + (count == 1 ? "y)" : "ies)");
     }
     auto* table = (*array)[index].as_table();
     if (table == nullptr) return where + entry + " is not a table";
@@ -423,10 +429,12 @@ std::string apply_override(toml::table& root, const std::string& argument, Probl
       start = dot + 1;
     }
     parts.push_back(key.substr(start));
-  } else if (known.tables.count(key) > 0 || key == "curves" || key == "boundary") {
+  } else if (known.tables.count(key) > 0 || key == "curves" || key == "boundary" ||
+             key == "probe") {
     return where + "'" + key + "' is a table; set the keys inside it instead (e.g. " +
            (key == "curves"     ? std::string("curves.ramp")
             : key == "boundary" ? std::string("boundary[0].value")
+            : key == "probe"    ? std::string("probe[0].points")
                                 : *known.leaves.lower_bound(key + ".")) +
            ")";
   } else {
@@ -604,6 +612,80 @@ void read_boundaries(const toml::table& root, const std::set<std::string>& curve
   }
 }
 
+/// Reads [[probe]] entries: keys as the schema says, names usable in a file name and distinct,
+/// start != end, points != 1.
+void read_probes(const toml::table& root, Config& config, Problems& problems) {
+  const toml::node* node = root.get("probe");
+  if (node == nullptr) return;
+  const auto* array = node->as_array();
+  if (array == nullptr || !array->is_array_of_tables()) {
+    problems.bad_value("probe", show(*node), "expected [[probe]] tables");
+    return;
+  }
+  const auto& known = known_paths();
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string entry = "probe[" + std::to_string(i) + "]";
+    const auto& table = *(*array)[i].as_table();
+    for (const auto& [k, value] : table) {
+      const std::string name(k.str());
+      if (std::find(known.probe_names.begin(), known.probe_names.end(), name) ==
+          known.probe_names.end()) {
+        const std::string full = entry + "." + name;
+        problems.add(
+            problems.source_of(full) + ": " +
+            unknown_key_message(full, suggest(full, prefixed(entry + ".", known.probe_names))));
+      }
+    }
+    ProbeConfig probe;
+    bool complete = true;
+    for (const auto& key : probe_keys()) {
+      const std::string full = entry + "." + key.path;
+      const toml::node* value = table.get(key.path);
+      if (value == nullptr) {
+        if (key.required) {
+          problems.bad_key(full, "required key is missing");
+          complete = false;
+        }
+        continue;
+      }
+      const Read read = read_value(*value, key);
+      if (!read.value) {
+        problems.bad_value(full, show(*value), read.problem);
+        complete = false;
+      } else {
+        key.store(probe, *read.value);
+      }
+    }
+    if (!problems.is_bad(entry + ".name") && !probe.name.empty()) {
+      const bool usable = std::all_of(probe.name.begin(), probe.name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '-';
+      });
+      if (!usable) {
+        problems.bad_value(entry + ".name", quote(probe.name),
+                           "may hold only letters, digits, '_' and '-' (it names the file "
+                           "probe_<name>.csv)");
+        complete = false;
+      } else if (!names.insert(probe.name).second) {
+        problems.bad_value(entry + ".name", quote(probe.name), "another [[probe]] has this name");
+        complete = false;
+      }
+    }
+    if (!problems.is_bad(entry + ".start") && !problems.is_bad(entry + ".end") &&
+        table.get("start") != nullptr && table.get("end") != nullptr && probe.start == probe.end) {
+      problems.bad_value(entry + ".end", format_value(probe.end), "must differ from start");
+      complete = false;
+    }
+    if (probe.points == 1) {
+      problems.bad_value(entry + ".points", "1",
+                         "must be 0 (mesh nodes, or 101 points) or at least 2");
+      complete = false;
+    }
+    if (complete) config.output.probes.push_back(probe);
+  }
+}
+
 std::string resolve_against(const std::string& file, const std::string& base_dir) {
   std::filesystem::path path(file);
   if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
@@ -751,6 +833,10 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
         "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");
   }
 
+  if (!problems.is_bad("output.line_points") && config.output.line_points == 1) {
+    problems.bad_value("output.line_points", "1",
+                       "must be 0 (mesh nodes, or 101 points) or at least 2");
+  }
   if (!problems.is_bad("output.line_start") && !problems.is_bad("output.line_end") &&
       config.output.line_start == config.output.line_end) {
     problems.bad_value("output.line_end",
@@ -813,6 +899,7 @@ Config parse_case(const std::string& toml_text, const std::string& source_name,
   std::set<std::string> curve_names;
   read_curves(root, config, curve_names, problems);
   read_boundaries(root, curve_names, config, problems);
+  read_probes(root, config, problems);
   check_cross_fields(root, base_dir, config, problems);
 
   if (!problems.empty()) throw CaseError(problems.take());

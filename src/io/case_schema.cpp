@@ -548,6 +548,13 @@ std::vector<Key<Config>> build_global_keys() {
       "output.line_end", "mm", "End point of the probe line; must differ from line_start.",
       [](auto& c) -> auto& { return c.output.line_end; }));
   keys.push_back(integer_key<C>(
+      "output.line_points", from_to(0, static_cast<double>(kMaxProbePoints)), {},
+      "Samples of the probe line: 0 = the mesh nodes on the line when it runs along the mesh "
+      "from start to end (element edges or node to node through elements), else 101 evenly "
+      "spaced points; n >= 2 = n evenly spaced points, the fields interpolated by the element "
+      "shape functions (docs/probes.md).",
+      [](auto& c) -> auto& { return c.output.line_points; }));
+  keys.push_back(integer_key<C>(
       "output.every", at_least(1), {},
       "Write outputs every n steps (the last step is always written).",
       [](auto& c) -> auto& { return c.output.every; }));
@@ -555,7 +562,9 @@ std::vector<Key<Config>> build_global_keys() {
       "output.fields", "Write the HDF5/XDMF field output.",
       [](auto& c) -> auto& { return c.output.fields; }));
   keys.push_back(bool_key<C>(
-      "output.line", "Write the probe-line CSV output.",
+      "output.line",
+      "Probe line: write line.csv and take the oscillation measures (p_mid, overshoot, "
+      "oscillation) on it; false = no probe line at all (its points need not lie in the body).",
       [](auto& c) -> auto& { return c.output.line; }));
   keys.push_back(string_list_key<C>(
       "output.reactions", {},
@@ -619,6 +628,35 @@ std::vector<Key<BoundaryCondition>> build_boundary_keys() {
   curve.per_type = true;
   curve.need = needs({}, {T::Symmetry});
   keys.push_back(curve);
+  return keys;
+}
+
+std::vector<Key<ProbeConfig>> build_probe_keys() {
+  using P = ProbeConfig;
+  std::vector<Key<P>> keys;
+  auto name = string_key<P>(
+      "name",
+      "Name of the probe: letters, digits, '_' and '-'; its samples go to probe_<name>.csv. "
+      "Names must differ.",
+      [](auto& p) -> auto& { return p.name; });
+  name.required = true;
+  name.non_empty = true;
+  keys.push_back(name);
+  auto start = vector_key<P>(
+      "start", "mm", "Start point of the probe line; must lie in the body.",
+      [](auto& p) -> auto& { return p.start; });
+  start.required = true;
+  keys.push_back(start);
+  auto end = vector_key<P>(
+      "end", "mm", "End point of the probe line; must lie in the body and differ from start.",
+      [](auto& p) -> auto& { return p.end; });
+  end.required = true;
+  keys.push_back(end);
+  keys.push_back(integer_key<P>(
+      "points", from_to(0, static_cast<double>(kMaxProbePoints)), {},
+      "Samples: 0 = the mesh nodes on the line when it runs along the mesh, else 101 evenly "
+      "spaced points; n >= 2 = n evenly spaced points (interpolated). 1 is not allowed.",
+      [](auto& p) -> auto& { return p.points; }));
   return keys;
 }
 
@@ -754,6 +792,23 @@ std::string boundary_section_markdown() {
   return out + "\n";
 }
 
+std::string probe_section_markdown() {
+  std::string out = "### `[[probe]]`\n\n";
+  out +=
+      "Named probe lines, one `[[probe]]` table each (none by default): the solution sampled "
+      "from start to end and written to `probe_<name>.csv` with the columns of `line.csv` "
+      "(docs/probes.md). With `--set`, entry i (counted from 0) is `probe[i]`, e.g. `--set "
+      "probe[0].points=201`.\n\n";
+  out += kTableHeader;
+  const ProbeConfig defaults;
+  for (const auto& key : probe_keys()) {
+    const std::string default_text =
+        key.required ? "required" : "`" + format_value(key.fetch(defaults)) + "`";
+    out += table_row(key, "probe[i]." + key.path, default_text);
+  }
+  return out;
+}
+
 }  // namespace
 
 bool Range::contains(double x) const {
@@ -789,6 +844,11 @@ const std::vector<Key<Config>>& global_keys() {
 
 const std::vector<Key<BoundaryCondition>>& boundary_keys() {
   static const auto keys = build_boundary_keys();
+  return keys;
+}
+
+const std::vector<Key<ProbeConfig>>& probe_keys() {
+  static const auto keys = build_probe_keys();
   return keys;
 }
 
@@ -925,7 +985,7 @@ std::string case_schema_markdown() {
       default_text = "`" + format_value(key.fetch(defaults)) + "`";
     out += table_row(key, key.path, default_text);
   }
-  return out;
+  return out + "\n" + probe_section_markdown();
 }
 
 nlohmann::json config_to_json(const Config& config) {
@@ -960,6 +1020,14 @@ nlohmann::json config_to_json(const Config& config) {
     bcs.push_back(entry);
   }
   out["boundary"] = bcs;
+
+  nlohmann::json probes = nlohmann::json::array();
+  for (const auto& probe : config.output.probes) {
+    nlohmann::json entry = nlohmann::json::object();
+    for (const auto& key : probe_keys()) entry[key.path] = value_to_json(key.fetch(probe));
+    probes.push_back(entry);
+  }
+  out["probe"] = probes;
   return out;
 }
 

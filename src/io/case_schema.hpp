@@ -76,6 +76,11 @@ struct Key : KeyInfo {
 const std::vector<Key<Config>>& global_keys();
 /// Keys of one [[boundary]] entry.
 const std::vector<Key<BoundaryCondition>>& boundary_keys();
+/// Keys of one [[probe]] entry.
+const std::vector<Key<ProbeConfig>>& probe_keys();
+
+/// Largest number of points on a probe line.
+inline constexpr std::int64_t kMaxProbePoints = 100000;
 
 /// Boundary-type names in BcType order.
 const std::vector<std::string>& bc_type_names();

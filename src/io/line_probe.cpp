@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <iterator>
 #include <numeric>
 #include <stdexcept>
 #include <system_error>
@@ -31,7 +33,12 @@ Point sub(const Point& x, const Point& y) { return {x[0] - y[0], x[1] - y[1], x[
 }  // namespace
 
 LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
-    : a_(a), b_(b), tolerance_(tolerance), num_vertices_(mesh.num_vertices) {
+    : a_(a),
+      b_(b),
+      tolerance_(tolerance),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      at_nodes_(true) {
   const std::string where = "LineProbe from " + fmt_point(a) + " to " + fmt_point(b) +
                             " with tolerance " + fmt_double(tolerance) + " mm";
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
@@ -43,7 +50,6 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
     throw std::runtime_error(where + ": end points must be distinct and finite");
   }
   const std::vector<std::array<Index, 2>> edges = edge_node_vertices(mesh);
-  num_nodes_ = mesh.num_nodes();
 
   struct Hit {
     double s;
@@ -73,14 +79,84 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
   });
 
   for (const Hit& h : hits) {
-    nodes_.push_back(h.node);
+    ProbeSample sample;
+    sample.s = h.s;
+    sample.x = mesh.nodes[static_cast<std::size_t>(h.node)];
+    sample.u_weights = {{h.node, 1.0}};
+    if (h.node < num_vertices_) {
+      sample.p_weights = {{h.node, 1.0}};
+    } else {
+      const auto [v0, v1] = edges[static_cast<std::size_t>(h.node - num_vertices_)];
+      sample.p_weights = {{v0, 0.5}, {v1, 0.5}};
+    }
     s_.push_back(h.s);
-    positions_.push_back(mesh.nodes[static_cast<std::size_t>(h.node)]);
-    vertex_pairs_.push_back(h.node < num_vertices_
-                                ? std::array<Index, 2>{h.node, h.node}
-                                : edges[static_cast<std::size_t>(h.node - num_vertices_)]);
+    samples_.push_back(std::move(sample));
   }
 }
+
+LineProbe::LineProbe(Point a, Point b, std::vector<ProbeSample> samples, Index num_nodes,
+                     Index num_vertices)
+    : a_(a),
+      b_(b),
+      num_nodes_(num_nodes),
+      num_vertices_(num_vertices),
+      samples_(std::move(samples)) {
+  const std::string where = "LineProbe from " + fmt_point(a) + " to " + fmt_point(b);
+  const Point ab = sub(b, a);
+  const double length = std::sqrt(dot(ab, ab));
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    throw std::runtime_error(where + ": end points must be distinct and finite");
+  }
+  if (samples_.size() < 2) {
+    throw std::runtime_error(where + ": " + std::to_string(samples_.size()) +
+                             " samples, need at least 2");
+  }
+  for (std::size_t i = 0; i < samples_.size(); ++i) {
+    const ProbeSample& sample = samples_[i];
+    if (i > 0 && !(sample.s >= samples_[i - 1].s)) {
+      throw std::runtime_error(where + ": sample " + std::to_string(i) + " at s = " +
+                               fmt_double(sample.s) + " mm comes before the previous one");
+    }
+    auto check = [&](const std::vector<std::pair<Index, double>>& weights, Index count,
+                     const char* what) {
+      if (weights.empty())
+        throw std::runtime_error(where + ": sample " + std::to_string(i) + " has no " + what +
+                                 " weights");
+      for (const auto& [n, w] : weights) {
+        if (n < 0 || n >= count)
+          throw std::runtime_error(where + ": sample " + std::to_string(i) + " weighs " + what +
+                                   " " + std::to_string(n) + ", out of range (" +
+                                   std::to_string(count) + ")");
+      }
+    };
+    check(sample.u_weights, num_nodes_, "node");
+    check(sample.p_weights, num_vertices_, "vertex");
+    s_.push_back(sample.s);
+  }
+}
+
+Index LineProbe::node(std::size_t i) const {
+  const ProbeSample& sample = samples_.at(i);
+  return at_nodes_ ? sample.u_weights.front().first : Index{-1};
+}
+
+bool LineProbe::is_vertex(std::size_t i) const {
+  const Index n = node(i);
+  return n >= 0 && n < num_vertices_;
+}
+
+namespace {
+/// Σ w f over the weights, starting from the first term so that a single weight 1 returns the
+/// value itself bit for bit (signed zeros included).
+double weighted_sum(const std::vector<std::pair<Index, double>>& weights,
+                    const std::vector<double>& f, std::size_t stride, std::size_t offset) {
+  double sum =
+      weights.front().second * f[stride * static_cast<std::size_t>(weights.front().first) + offset];
+  for (std::size_t k = 1; k < weights.size(); ++k)
+    sum += weights[k].second * f[stride * static_cast<std::size_t>(weights[k].first) + offset];
+  return sum;
+}
+}  // namespace
 
 std::vector<double> LineProbe::pressure(const std::vector<double>& p_vertices) const {
   if (p_vertices.size() != static_cast<std::size_t>(num_vertices_)) {
@@ -88,13 +164,9 @@ std::vector<double> LineProbe::pressure(const std::vector<double>& p_vertices) c
                              " entries, expected " + std::to_string(num_vertices_) +
                              " (one per vertex)");
   }
-  std::vector<double> p(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const auto [v0, v1] = vertex_pairs_[i];
-    p[i] = v0 == v1 ? p_vertices[static_cast<std::size_t>(v0)]
-                    : 0.5 * (p_vertices[static_cast<std::size_t>(v0)] +
-                             p_vertices[static_cast<std::size_t>(v1)]);
-  }
+  std::vector<double> p(samples_.size());
+  for (std::size_t i = 0; i < samples_.size(); ++i)
+    p[i] = weighted_sum(samples_[i].p_weights, p_vertices, 1, 0);
   return p;
 }
 
@@ -104,12 +176,40 @@ std::array<double, 3> LineProbe::displacement(const std::vector<double>& u, std:
                              " entries, expected 3 x " + std::to_string(num_nodes_) +
                              " nodes = " + std::to_string(3 * num_nodes_));
   }
-  if (i >= nodes_.size()) {
-    throw std::runtime_error("LineProbe: probe node " + std::to_string(i) + " out of range (" +
-                             std::to_string(nodes_.size()) + " nodes)");
+  if (i >= samples_.size()) {
+    throw std::runtime_error("LineProbe: probe sample " + std::to_string(i) + " out of range (" +
+                             std::to_string(samples_.size()) + " samples)");
   }
-  const auto n = static_cast<std::size_t>(nodes_[i]);
-  return {u[3 * n], u[3 * n + 1], u[3 * n + 2]};
+  const auto& w = samples_[i].u_weights;
+  return {weighted_sum(w, u, 3, 0), weighted_sum(w, u, 3, 1), weighted_sum(w, u, 3, 2)};
+}
+
+bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh) {
+  if (!probe.at_mesh_nodes() || probe.size() < 2) return false;
+  const Point ab = sub(probe.b(), probe.a());
+  const double length = std::sqrt(dot(ab, ab));
+  const double tol = probe.tolerance();
+  if (std::abs(probe.s().front()) > tol || std::abs(probe.s().back() - length) > tol) return false;
+  // Elements of each probe node, then a common one for every consecutive pair.
+  std::vector<std::size_t> sample_of(static_cast<std::size_t>(mesh.num_nodes()), SIZE_MAX);
+  for (std::size_t i = 0; i < probe.size(); ++i)
+    sample_of[static_cast<std::size_t>(probe.node(i))] = i;
+  std::vector<std::vector<Index>> tets_of(probe.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (Index n : mesh.tets[t]) {
+      const std::size_t i = sample_of[static_cast<std::size_t>(n)];
+      if (i != SIZE_MAX) tets_of[i].push_back(static_cast<Index>(t));
+    }
+  }
+  for (std::size_t i = 0; i + 1 < probe.size(); ++i) {
+    const auto& l = tets_of[i];
+    const auto& r = tets_of[i + 1];
+    // Both lists are in increasing element order.
+    std::vector<Index> common;
+    std::set_intersection(l.begin(), l.end(), r.begin(), r.end(), std::back_inserter(common));
+    if (common.empty()) return false;
+  }
+  return true;
 }
 
 double interpolate_on_line(const std::vector<double>& s, const std::vector<double>& f,

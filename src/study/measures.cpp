@@ -61,9 +61,16 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
 }
 
 DrainedEnds drained_ends(const LineProbe& probe, const BiphasicProblem& problem) {
+  // Weights below this are round-off (a point on an element face has the opposite vertex's
+  // weight ~1e-16, not 0).
+  constexpr double kNegligible = 1e-9;
   auto drained = [&](std::size_t i) {
-    return probe.is_vertex(i) &&
-           problem.constrained()[static_cast<std::size_t>(problem.pattern().p_dof(probe.node(i)))];
+    for (const auto& [vertex, weight] : probe.sample(i).p_weights) {
+      if (std::abs(weight) > kNegligible &&
+          !problem.constrained()[static_cast<std::size_t>(problem.pattern().p_dof(vertex))])
+        return false;
+    }
+    return true;
   };
   const bool start = drained(0), end = drained(probe.size() - 1);
   if (start && end) return DrainedEnds::Both;

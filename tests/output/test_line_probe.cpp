@@ -146,6 +146,56 @@ TEST(LineProbe, ThrowsWithClearMessageWhenTooFewVertices) {
   EXPECT_THROW(LineProbe(mesh, {0, 0, 0}, {kEdge, 0, 0}, -1.0), std::runtime_error);
 }
 
+// The mesh-node sampling is kept only where the line runs along the mesh from end to end.
+TEST(LineProbe, RunsAlongTheMeshOnlyFromEndToEndThroughElements) {
+  const Mesh mesh = test::make_cube_mesh(kEdge);
+  // The cube's diagonal is an edge of all six elements; a face diagonal crosses two faces'
+  // triangles from node to node (vertex 1, the edge node of (0,0,0)-(2,2,0), vertex 2).
+  EXPECT_TRUE(runs_along_mesh(LineProbe(mesh, {0, 0, 0}, {kEdge, kEdge, kEdge}, kTol), mesh));
+  EXPECT_TRUE(runs_along_mesh(LineProbe(mesh, {kEdge, 0, 0}, {0, kEdge, 0}, kTol), mesh));
+  // Past the body at either end: the end point is not a node.
+  EXPECT_FALSE(runs_along_mesh(LineProbe(mesh, {0, 0, 0}, {2 * kEdge, 0, 0}, kTol), mesh));
+  EXPECT_FALSE(runs_along_mesh(LineProbe(mesh, {-0.5, 0, 0}, {kEdge, 0, 0}, kTol), mesh));
+  // Given samples are not mesh nodes.
+  const LineProbe given({0, 0, 0}, {1, 0, 0},
+                        {ProbeSample{0.0, {0, 0, 0}, {{0, 1.0}}, {{0, 1.0}}},
+                         ProbeSample{1.0, {1, 0, 0}, {{1, 1.0}}, {{1, 1.0}}}},
+                        mesh.num_nodes(), mesh.num_vertices);
+  EXPECT_FALSE(given.at_mesh_nodes());
+  EXPECT_EQ(given.node(0), -1);
+  EXPECT_FALSE(runs_along_mesh(given, mesh));
+}
+
+TEST(LineProbe, GivenSamplesAreWeightedSums) {
+  const Mesh mesh = test::make_cube_mesh(kEdge);
+  const Index mid = node_at(mesh, {1, 0, 0});
+  const LineProbe probe(
+      {0, 0, 0}, {kEdge, 0, 0},
+      {ProbeSample{
+           0.5, {0.5, 0, 0}, {{0, 0.375}, {mid, 0.75}, {1, -0.125}}, {{0, 0.75}, {1, 0.25}}},
+       ProbeSample{2.0, {kEdge, 0, 0}, {{1, 1.0}}, {{1, 1.0}}}},
+      mesh.num_nodes(), mesh.num_vertices);
+  std::vector<double> u(3 * mesh.nodes.size(), 0.0);
+  u[0] = 8.0;                                  // node 0, x
+  u[3 * static_cast<std::size_t>(mid)] = 4.0;  // edge node, x
+  u[3] = -16.0;                                // node 1, x
+  std::vector<double> p(8, 0.0);
+  p[0] = 4.0;
+  p[1] = 8.0;
+  EXPECT_EQ(probe.displacement(u, 0)[0], 0.375 * 8.0 + 0.75 * 4.0 + 0.125 * 16.0);
+  EXPECT_EQ(probe.pressure(p), (std::vector<double>{5.0, 8.0}));
+  // Out-of-range weights and decreasing s are refused.
+  auto make = [&](Index node, double s1) {
+    return LineProbe({0, 0, 0}, {1, 0, 0},
+                     {ProbeSample{0.0, {0, 0, 0}, {{node, 1.0}}, {{0, 1.0}}},
+                      ProbeSample{s1, {1, 0, 0}, {{1, 1.0}}, {{1, 1.0}}}},
+                     mesh.num_nodes(), mesh.num_vertices);
+  };
+  EXPECT_THROW(make(27, 1.0), std::runtime_error);
+  EXPECT_THROW(make(0, -1.0), std::runtime_error);
+  EXPECT_NO_THROW(make(26, 1.0));
+}
+
 TEST(InterpolateOnLine, PiecewiseLinearAndClamped) {
   const std::vector<double> s{0.0, 1.0, 3.0};
   const std::vector<double> f{2.0, 4.0, 0.0};

@@ -177,15 +177,27 @@ struct LinearSolverConfig {
   KrylovConfig krylov;
 };
 
+/// A named probe line ([[probe]]), written to probe_<name>.csv.
+struct ProbeConfig {
+  std::string name;               ///< letters, digits, '_' and '-'
+  std::array<double, 3> start{};  ///< [mm]
+  std::array<double, 3> end{};    ///< [mm]
+  /// 0: the mesh nodes on the line when it runs along the mesh, else 101 points; n >= 2: n
+  /// evenly spaced points, interpolated by the shape functions.
+  int points = 0;
+};
+
 struct OutputConfig {
   std::array<double, 3> line_start{0.0, 0.0, 0.0};  ///< probe line [mm]
   std::array<double, 3> line_end{0.0, 0.0, 8.0};
-  int every = 1;       ///< write outputs every n steps (and always the last)
-  bool fields = true;  ///< HDF5/XDMF fields
-  bool line = true;    ///< line CSV
+  int line_points = 0;  ///< sampling of the probe line, as ProbeConfig::points
+  int every = 1;        ///< write outputs every n steps (and always the last)
+  bool fields = true;   ///< HDF5/XDMF fields
+  bool line = true;     ///< probe line: line.csv and the oscillation measures
   /// Boundaries whose reaction forces are written (reactions.csv and the summary): the force
   /// their displacement and symmetry conditions exert on the body [N].
   std::vector<std::string> reactions;
+  std::vector<ProbeConfig> probes;  ///< [[probe]] entries
 };
 
 /// Case-file names of enumerators ("displacement", "metis", …).

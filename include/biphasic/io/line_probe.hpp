@@ -1,38 +1,62 @@
-// Sampling of the nodal fields along a straight line through the mesh, and CSV output of it.
+// Sampling of the solution along a straight line through the mesh, and CSV output of it.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
 
 namespace biphasic {
 
-/// The mesh nodes (vertices and edge nodes) lying on the segment a–b, sorted by arc length s
-/// from a. A node counts as on the segment if its distance to the segment is at most the
-/// tolerance [mm]; s is its projection on the line through a and b [mm].
+/// One sampling point of a probe: its position, its arc length from the probe's start, and
+/// the weights that give the fields there, u(x) = Σ w_a u_a over P2 nodes a and
+/// p(x) = Σ v_c p_c over vertices c (the element's shape functions at x).
+struct ProbeSample {
+  double s = 0.0;                                   ///< arc length from the start point [mm]
+  Point x{};                                        ///< position [mm]
+  std::vector<std::pair<Index, double>> u_weights;  ///< (node, N_a(x))
+  std::vector<std::pair<Index, double>> p_weights;  ///< (vertex, N^p_c(x))
+};
+
+/// Samples of the solution along a segment a–b, in order of arc length s from a: either the
+/// mesh nodes on the segment (the constructor from a mesh), or any points with their
+/// interpolation weights (the constructor from samples, see biphasic/app/probes.hpp).
 class LineProbe {
  public:
-  /// Throws std::runtime_error if a == b, the tolerance is negative or not finite, the mesh is
-  /// inconsistent, or fewer than two vertices lie on the segment.
+  /// The mesh nodes (vertices and edge nodes) lying on the segment a–b, sorted by s. A node
+  /// counts as on the segment if its distance to the segment is at most the tolerance [mm]; s
+  /// is its projection on the line through a and b [mm]. Throws std::runtime_error if a == b,
+  /// the tolerance is negative or not finite, or fewer than two vertices lie on the segment.
   LineProbe(const Mesh& mesh, Point a, Point b, double tolerance);
 
-  std::size_t size() const { return nodes_.size(); }
-  const std::vector<double>& s() const { return s_; }       ///< arc length from a [mm]
-  Index node(std::size_t i) const { return nodes_.at(i); }  ///< mesh node index
-  bool is_vertex(std::size_t i) const { return node(i) < num_vertices_; }
-  const Point& position(std::size_t i) const { return positions_.at(i); }  ///< [mm]
+  /// Given samples (in order of increasing s) on a mesh of `num_nodes` nodes, the first
+  /// `num_vertices` of them vertices. Throws std::runtime_error if a == b, there are fewer than
+  /// two samples, s decreases, or a weight names a node (vertex) out of range.
+  LineProbe(Point a, Point b, std::vector<ProbeSample> samples, Index num_nodes,
+            Index num_vertices);
+
+  std::size_t size() const { return samples_.size(); }
+  const std::vector<double>& s() const { return s_; }  ///< arc length from a [mm]
+  const ProbeSample& sample(std::size_t i) const { return samples_.at(i); }
+  /// Whether the samples are the mesh nodes on the segment (the first constructor).
+  bool at_mesh_nodes() const { return at_nodes_; }
+  /// Mesh node of sample i when at_mesh_nodes(), else −1.
+  Index node(std::size_t i) const;
+  /// Whether sample i is a mesh vertex (a node sample at a vertex).
+  bool is_vertex(std::size_t i) const;
+  const Point& position(std::size_t i) const { return samples_.at(i).x; }  ///< [mm]
   const Point& a() const { return a_; }
   const Point& b() const { return b_; }
-  double tolerance() const { return tolerance_; }  ///< [mm]
+  double tolerance() const { return tolerance_; }  ///< [mm] (node samples only)
 
-  /// Pressure [MPa] at every probe node from the vertex pressures (size num_vertices); an edge
-  /// node gets the mean of its edge's two vertices.
+  /// Pressure [MPa] at every sample from the vertex pressures (size num_vertices): at a node
+  /// sample on an edge, the mean of the edge's two vertices.
   std::vector<double> pressure(const std::vector<double>& p_vertices) const;
-  /// Displacement [mm] of probe node i; `u` is node-major, size 3·num_nodes.
+  /// Displacement [mm] at sample i; `u` is node-major, size 3·num_nodes.
   std::array<double, 3> displacement(const std::vector<double>& u, std::size_t i) const;
 
  private:
@@ -41,11 +65,16 @@ class LineProbe {
   double tolerance_ = 0.0;
   Index num_nodes_ = 0;
   Index num_vertices_ = 0;
-  std::vector<Index> nodes_;
+  bool at_nodes_ = false;
+  std::vector<ProbeSample> samples_;
   std::vector<double> s_;
-  std::vector<Point> positions_;
-  std::vector<std::array<Index, 2>> vertex_pairs_;  ///< {n, n} for a vertex, its edge otherwise
 };
+
+/// Whether a node probe (LineProbe from a mesh) covers its whole segment along the mesh:
+/// its first and last samples lie at a and b (within the probe's tolerance) and every two
+/// consecutive samples are nodes of one element, so that the segment runs along element
+/// edges or through elements from node to node.
+bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh);
 
 /// Piecewise-linear interpolation of samples f(s) at s_query; s must be non-decreasing and the
 /// result is clamped to the end values outside [s.front(), s.back()]. Throws
@@ -54,7 +83,7 @@ double interpolate_on_line(const std::vector<double>& s, const std::vector<doubl
                            double s_query);
 
 /// Long-format CSV of line samples: header `t,s,x,y,z,ux,uy,uz,p` (t in s; s, x, y, z, u in mm;
-/// p in MPa) and one row per probe node and output time, at full (round-trip) precision. The
+/// p in MPa) and one row per probe sample and output time, at full (round-trip) precision. The
 /// file is flushed after every write so that it survives a crash.
 class LineCsvWriter {
  public:

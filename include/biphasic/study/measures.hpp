@@ -62,9 +62,10 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
 /// in the units of p; ≥ 0 up to round-off. Throws std::invalid_argument for other counts.
 double excess_variation(const std::vector<double>& p, int turning_points);
 
-/// The drained ends of `probe` in `problem`: an end is drained when its node is a vertex whose
-/// pressure is prescribed (a Dirichlet pressure row); an edge node at an end counts as not
-/// drained.
+/// The drained ends of `probe` in `problem`: an end is drained when its pressure is
+/// interpolated from vertices whose pressure is prescribed (Dirichlet pressure rows) only: a
+/// vertex with a prescribed pressure, an edge node between two such vertices, or a point on a
+/// face of them.
 DrainedEnds drained_ends(const LineProbe& probe, const BiphasicProblem& problem);
 
 }  // namespace biphasic

@@ -1,0 +1,79 @@
+// The probes of a run: the probe line (output.line_start → output.line_end, written to line.csv
+// and measured for oscillations) and the named [[probe]] lines (probe_<name>.csv), sampled at
+// the mesh nodes on the line or at evenly spaced points by interpolation (docs/probes.md).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "biphasic/fe/point_locator.hpp"
+#include "biphasic/io/config.hpp"
+#include "biphasic/io/line_probe.hpp"
+#include "biphasic/mesh/mesh.hpp"
+#include "biphasic/study/measures.hpp"
+
+namespace biphasic {
+
+class BiphasicProblem;
+
+/// Points of an interpolated probe when `points = 0` and the line does not run along the mesh.
+inline constexpr int kDefaultProbePoints = 101;
+
+/// A probe ready to sample.
+struct Probe {
+  std::string name;  ///< "line" for the probe line, else the [[probe]] name
+  std::string key;   ///< where the case file defines it ("output.line_start", "probe[0]")
+  std::string file;  ///< CSV file name in the output folder
+  LineProbe samples;
+  bool measured = false;  ///< the oscillation measures are taken on it (the probe line only)
+};
+
+/// `n` ≥ 2 evenly spaced points from a to b (both included), each located in its element
+/// and weighted by the element's shape functions there: the 10 P2 functions N_a(ξ) for u, the
+/// 4 P1 functions L_c(ξ) for p. Points within `tolerance` [mm] outside the body count as on
+/// its surface. Throws std::out_of_range naming the first point outside, its number and how
+/// many are outside.
+LineProbe interpolating_probe(const Mesh& mesh, const PointLocator& locator, const Point& a,
+                              const Point& b, int n, double tolerance);
+
+/// The probes of `config` on `mesh`: the probe line when output.line is on, then every
+/// [[probe]]. A probe with points = 0 samples the mesh nodes on its line when the line runs
+/// along the mesh from end to end (runs_along_mesh), else kDefaultProbePoints points; with
+/// points = n, n interpolated points. Throws CaseError naming the case file, the key, the probe
+/// and the point for points outside the body (beyond 1e-6 of the mesh's bounding-box diagonal).
+std::vector<Probe> build_probes(const Config& config, const Mesh& mesh);
+
+/// `biphasic check`: builds the mesh (writing no .msh file) and the probes on it, so that a
+/// probe point outside the body is reported before a run. Returns a line per probe saying how
+/// it is sampled; throws CaseError.
+std::vector<std::string> check_probes(const Config& config);
+
+/// Writes every probe's CSV at each output and takes the oscillation measures on the probe
+/// line.
+class ProbeRecorder {
+ public:
+  /// Opens (truncates) each probe's CSV in `output_dir`; the drained ends of the probe line
+  /// come from the pressure conditions of `problem`.
+  ProbeRecorder(std::vector<Probe> probes, const BiphasicProblem& problem,
+                const std::string& output_dir);
+  ~ProbeRecorder();
+
+  /// The summary's "line" block (start, end, sampling, samples, drained ends; or that there is
+  /// no probe line) and, with named probes, its "probes" list.
+  void describe(nlohmann::json& summary) const;
+
+  /// Writes a row per sample of every probe at time t [s]; returns the probe line's measures,
+  /// or nothing without a probe line. `u` has 3 entries per node, `p` one per vertex.
+  std::optional<LineMeasures> write(double t, const std::vector<double>& u,
+                                    const std::vector<double>& p);
+
+ private:
+  std::vector<Probe> probes_;
+  std::vector<std::unique_ptr<LineCsvWriter>> writers_;
+  DrainedEnds drained_ = DrainedEnds::None;
+};
+
+}  // namespace biphasic
