@@ -328,8 +328,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   }
   write_output(t_start, y, std::vector<double>(y.size(), 0.0));
   const int every = std::max(1, config.output.every);
-  const int planned =
-      std::max(1, static_cast<int>(std::ceil(config.time.t_end / config.time.dt - 1e-9)));
+  const int planned = integrator.planned_outputs();
 
   constexpr double kSummaryInterval = 1.0;  // s of wall time between summary refreshes
   auto last_summary = Clock::now();

@@ -11,10 +11,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
 
+#include "biphasic/time/time_integrator.hpp"
 #include "case_schema.hpp"
 
 namespace biphasic {
@@ -814,6 +816,17 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
     problems.bad_value("time.dt", shown_at(root, "time.dt", format_number(config.time.dt)),
                        "must be <= time.t_end = " +
                            shown_at(root, "time.t_end", format_number(config.time.t_end)) + " (s)");
+  } else if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
+             interval_count(config.time.t_end, config.time.dt) > kMaxOutputIntervals) {
+    const long long count = interval_count(config.time.t_end, config.time.dt);
+    problems.bad_value(
+        "time.dt", shown_at(root, "time.dt", format_number(config.time.dt)),
+        "gives time.t_end / time.dt = " + format_number(config.time.t_end) + " s / " +
+            format_number(config.time.dt) + " s = " +
+            (count == std::numeric_limits<long long>::max() ? std::string("more than 9e18")
+                                                            : std::to_string(count)) +
+            " steps, more than the " + std::to_string(kMaxOutputIntervals) +
+            " a run may have; use a larger time.dt or a shorter time.t_end");
   }
 
   if (!problems.is_bad("time.volume_rate") && !problems.is_bad("time.integrator") &&

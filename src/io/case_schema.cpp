@@ -400,7 +400,8 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.time.t_end; }));
   keys.push_back(number_key<C>(
       "time.dt", above(0), "s",
-      "Backward-Euler time step, and the output interval of bdf; must be <= time.t_end.",
+      "Backward-Euler time step, and the output interval of bdf; must be <= time.t_end, and "
+      "time.t_end / time.dt at most 1e7 steps.",
       [](auto& c) -> auto& { return c.time.dt; }));
   keys.push_back(choice_key<C>(
       "time.volume_rate", volume_rate_names(),
@@ -423,11 +424,13 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.time.newton.rtol_pressure; }));
   keys.push_back(number_key<C>(
       "time.newton.atol_displacement", at_least(0), "N",
-      "Absolute tolerance on the momentum residual (max norm).",
+      "Absolute tolerance on the momentum residual (max norm); refused above 0.1 % of the force "
+      "scale H_A h u the loads imply (h the mean element size, u the displacement scale).",
       [](auto& c) -> auto& { return c.time.newton.atol_displacement; }));
   keys.push_back(number_key<C>(
       "time.newton.atol_pressure", at_least(0), "mm^3/s",
-      "Absolute tolerance on the mass residual (max norm).",
+      "Absolute tolerance on the mass residual (max norm); refused above 0.1 % of the "
+      "volume-rate scale k h p the loads imply (p the pressure scale).",
       [](auto& c) -> auto& { return c.time.newton.atol_pressure; }));
   keys.push_back(integer_key<C>(
       "time.newton.max_setup_calls", at_least(1), {},
@@ -471,7 +474,7 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.time.bdf.max_step; }));
   keys.push_back(integer_key<C>(
       "time.bdf.max_steps", from_to(1, 100000000), {},
-      "Internal steps allowed between two outputs.",
+      "Internal steps allowed between two outputs; one more stops the run with an error.",
       [](auto& c) -> auto& { return c.time.bdf.max_steps; }));
   keys.push_back(number_key<C>(
       "time.bdf.delta_cj", strictly_between(0, 1), "",
@@ -521,7 +524,8 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.linear_solver.krylov.rtol; }));
   keys.push_back(integer_key<C>(
       "linear_solver.krylov.max_iterations", from_to(1, 100000), {},
-      "Iterative solver: FGMRES iterations allowed per solve.",
+      "Iterative solver: FGMRES iterations allowed per solve, restarts included (exactly, also "
+      "when below or not a multiple of restart).",
       [](auto& c) -> auto& { return c.linear_solver.krylov.max_iterations; }));
   keys.push_back(integer_key<C>(
       "linear_solver.krylov.restart", from_to(5, 1000), {},

@@ -28,6 +28,19 @@ namespace {
 using detail::Clock;
 using detail::seconds_since;
 
+/// FGMRES cycles that make exactly `max_iterations` iterations at most: `full_cycles` of
+/// `dimension` = min(restart, max_iterations) Krylov vectors, then one of `remainder` vectors
+/// (0 = none).
+struct KrylovCycles {
+  int dimension;
+  int full_cycles;
+  int remainder;
+};
+KrylovCycles krylov_cycles(int max_iterations, int restart) {
+  const int dimension = std::min(restart, max_iterations);
+  return {dimension, max_iterations / dimension, max_iterations % dimension};
+}
+
 class IterativeSolver final : public detail::DirectSolver {
  public:
   static constexpr double kAcceptedReduction = 1e-6;
@@ -42,20 +55,16 @@ class IterativeSolver final : public detail::DirectSolver {
     if (n <= saddle_.num_u || saddle_.num_u % 3 != 0 || !saddle_.schur_term)
       throw std::invalid_argument("iterative solver: inconsistent saddle-point structure");
     rhs_ = N_VNew_Serial(n, ctx);
-    krylov_ = SUNLinSol_SPFGMR(rhs_, SUN_PREC_RIGHT, config.restart, ctx);
-    if (!krylov_) throw std::runtime_error("SUNLinSol_SPFGMR failed");
-    const int restarts =
-        std::max(0, (config.max_iterations + config.restart - 1) / config.restart - 1);
-    SUNLinSol_SPFGMRSetMaxRestarts(krylov_, restarts);
-    SUNLinSol_SPFGMRSetGSType(krylov_, SUN_CLASSICAL_GS);
-    SUNLinSolSetATimes(krylov_, this, atimes);
-    SUNLinSolSetPreconditioner(krylov_, this, nullptr, psolve);
+    // Exactly max_iterations iterations at most: ⌊max/m⌋ cycles of m = min(restart, max)
+    // vectors, then, if needed, one shorter cycle of the remainder from where they stopped.
+    const KrylovCycles cycles = krylov_cycles(config.max_iterations, config.restart);
+    krylov_ = make_fgmres(cycles.dimension, cycles.full_cycles - 1, ctx);
     SUNLinSolSetZeroGuess(krylov_, SUNTRUE);
-    if (SUNLinSolInitialize(krylov_) != SUNLS_SUCCESS)
-      throw std::runtime_error("SPFGMR initialisation failed");
+    if (cycles.remainder > 0) krylov_tail_ = make_fgmres(cycles.remainder, 0, ctx);
   }
   ~IterativeSolver() override {
     if (krylov_) SUNLinSolFree(krylov_);
+    if (krylov_tail_) SUNLinSolFree(krylov_tail_);
     if (rhs_) N_VDestroy(rhs_);
   }
 
@@ -76,7 +85,8 @@ class IterativeSolver final : public detail::DirectSolver {
       stats().factor_seconds += seconds_since(t0);
       ++stats().factorizations;
       return SUNLS_SUCCESS;
-    } catch (const std::exception&) {
+    } catch (const std::exception& e) {
+      stats().last_error = std::string("iterative solver set-up: ") + e.what();
       return SUNLS_PSET_FAIL_UNREC;
     }
   }
@@ -92,9 +102,17 @@ class IterativeSolver final : public detail::DirectSolver {
     const double b_norm = std::sqrt(N_VDotProd(b, b));
     const double target = config_.rtol * b_norm;
     N_VScale(1.0, b, rhs_);  // x may be b itself
-    const int flag = SUNLinSolSolve(krylov_, nullptr, x, rhs_, target);
-    const int iterations = SUNLinSolNumIters(krylov_);
-    const double residual = SUNLinSolResNorm(krylov_);
+    int flag = SUNLinSolSolve(krylov_, nullptr, x, rhs_, target);
+    int iterations = SUNLinSolNumIters(krylov_);
+    double residual = SUNLinSolResNorm(krylov_);
+    if (flag != SUNLS_SUCCESS && flag > 0 && krylov_tail_) {
+      // The last, shorter cycle: from the iterate reached if the residual fell, else from 0.
+      if (flag != SUNLS_RES_REDUCED) N_VConst(0.0, x);
+      SUNLinSolSetZeroGuess(krylov_tail_, flag == SUNLS_RES_REDUCED ? SUNFALSE : SUNTRUE);
+      flag = SUNLinSolSolve(krylov_tail_, nullptr, x, rhs_, target);
+      iterations += SUNLinSolNumIters(krylov_tail_);
+      residual = SUNLinSolResNorm(krylov_tail_);
+    }
     stats().krylov_iterations += iterations;
     stats().max_krylov_iterations = std::max(stats().max_krylov_iterations, long{iterations});
     if (print_)
@@ -201,8 +219,12 @@ class IterativeSolver final : public detail::DirectSolver {
     try {
       self->apply_preconditioner(N_VGetArrayPointer(rv), N_VGetArrayPointer(zv));
       return 0;
-    } catch (const std::exception&) {
-      return -1;
+    } catch (const std::exception& e) {
+      self->stats().last_error = std::string("preconditioner: ") + e.what();
+      return SUNLS_PSOLVE_FAIL_UNREC;
+    } catch (...) {
+      self->stats().last_error = "preconditioner: an exception of unknown type";
+      return SUNLS_PSOLVE_FAIL_UNREC;
     }
   }
 
@@ -220,10 +242,27 @@ class IterativeSolver final : public detail::DirectSolver {
     stats().amg_cycles += amg_.apply(t, z);
   }
 
+  /// Right-preconditioned FGMRES (classical Gram–Schmidt) of `dimension` vectors, restarted
+  /// at most `restarts` times.
+  SUNLinearSolver make_fgmres(int dimension, int restarts, SUNContext ctx) {
+    SUNLinearSolver s = SUNLinSol_SPFGMR(rhs_, SUN_PREC_RIGHT, dimension, ctx);
+    if (!s) throw std::runtime_error("SUNLinSol_SPFGMR failed");
+    SUNLinSol_SPFGMRSetMaxRestarts(s, restarts);
+    SUNLinSol_SPFGMRSetGSType(s, SUN_CLASSICAL_GS);
+    SUNLinSolSetATimes(s, this, atimes);
+    SUNLinSolSetPreconditioner(s, this, nullptr, psolve);
+    if (SUNLinSolInitialize(s) != SUNLS_SUCCESS) {
+      SUNLinSolFree(s);
+      throw std::runtime_error("SPFGMR initialisation failed");
+    }
+    return s;
+  }
+
   KrylovConfig config_;
   SaddlePointStructure saddle_;
   detail::BoomerAmg amg_;
   SUNLinearSolver krylov_ = nullptr;
+  SUNLinearSolver krylov_tail_ = nullptr;  ///< the remainder cycle (max_iterations mod restart)
   N_Vector rhs_ = nullptr;  ///< copy of the right-hand side; SPFGMR's template vector
   const bool print_ = std::getenv("BIPHASIC_KRYLOV_PRINT") != nullptr;  ///< a line per solve
   std::vector<sunindextype> row_ptr_, col_, csc_pos_, p_start_;

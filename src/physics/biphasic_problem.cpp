@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <map>
 #include <set>
 #include <sstream>
@@ -430,7 +431,9 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
 template <class Work>
 void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, const double* ydot,
                                        Work&& work) {
-  std::string failure;
+  // The first exception of any thread, rethrown after the loop (none may leave an OpenMP
+  // region: that would end the program in std::terminate).
+  std::exception_ptr failure;
   static const int threads = worker_threads();
   for (const std::vector<Index>& colour : colours_) {
     const auto count = static_cast<std::ptrdiff_t>(colour.size());
@@ -443,13 +446,13 @@ void BiphasicProblem::for_each_element(bool with_jacobian, const double* y, cons
         try {
           element(e, y, ydot, with_jacobian, out);
           work(e, out);
-        } catch (const InvertedElement& err) {
+        } catch (...) {
 #pragma omp critical(biphasic_assembly_failure)
-          if (failure.empty()) failure = err.what();
+          if (!failure) failure = std::current_exception();
         }
       }
     }
-    if (!failure.empty()) throw InvertedElement(failure);
+    if (failure) std::rethrow_exception(failure);
   }
 }
 
@@ -461,7 +464,7 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
   const auto n = static_cast<std::ptrdiff_t>(size());
   const auto num_elements = static_cast<std::ptrdiff_t>(mesh_.tets.size());
   thread_residuals_.resize(static_cast<std::size_t>(threads));
-  std::string failure;
+  std::exception_ptr failure;  // the first of any thread, rethrown after the parallel region
 #pragma omp parallel num_threads(threads)
   {
     const int me = omp_get_thread_num();
@@ -475,9 +478,9 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
         element(static_cast<Index>(e), y, ydot, false, out);
         const Tet10& tet = mesh_.tets[static_cast<std::size_t>(e)];
         for (int s = 0; s < kElementDofs; ++s) mine[pattern_.global_dof(tet, s)] += out.residual(s);
-      } catch (const InvertedElement& err) {
+      } catch (...) {
 #pragma omp critical(biphasic_assembly_failure)
-        if (failure.empty()) failure = err.what();
+        if (!failure) failure = std::current_exception();
       }
     }
 #pragma omp for schedule(static)
@@ -487,7 +490,7 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
       F[i] = sum;
     }
   }
-  if (!failure.empty()) throw InvertedElement(failure);
+  if (failure) std::rethrow_exception(failure);
   for (const NodalLoad& l : nodal_loads_) {
     const double scale = l.value * curve_value(l.curve, t);
     for (const auto& [row, amount] : l.entries) F[row] += scale * amount;

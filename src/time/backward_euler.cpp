@@ -1,5 +1,7 @@
 #include "biphasic/time/backward_euler.hpp"
 
+#include "biphasic/time/solver_messages.hpp"
+
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -15,26 +17,40 @@ namespace biphasic {
 
 namespace {
 
-std::string kinsol_reason(int flag) {
-  switch (flag) {
-    case KIN_MAXITER_REACHED:
-      return "Newton iteration limit reached";
-    case KIN_MXNEWT_5X_EXCEEDED:
-      return "five consecutive maximum-length Newton steps";
-    case KIN_LINESEARCH_NONCONV:
-      return "line search failed";
-    case KIN_LSETUP_FAIL:
-      return "factorisation failed (singular matrix?)";
-    case KIN_LSOLVE_FAIL:
-      return "linear solve failed";
-    case KIN_SYSFUNC_FAIL:
-    case KIN_REPTD_SYSFUNC_ERR:
-    case KIN_FIRST_SYSFUNC_ERR:
-      return "residual evaluation failed";
-    case KIN_LINSOLV_NO_RECOVERY:
-      return "linear solver could not recover";
-    default:
-      return "KINSOL flag " + std::to_string(flag);
+/// Largest absolute Newton tolerance accepted, as a fraction of the residual the data drive:
+/// 0.1 % of the force scale (stiffness × displacement scale) on the momentum rows and of the
+/// volume-rate scale (conductance × pressure scale) on the mass rows.
+constexpr double kMaxToleranceFraction = 1e-3;
+
+/// Refuses (std::invalid_argument, naming key and value) an absolute tolerance that is no
+/// longer small against the residuals the loads produce: KINSOL would then accept the initial
+/// guess of every step after zero iterations, i.e. a solution that never moved (with
+/// atol = 1e308, p ≡ 0). Where the data imply no scale (body forces alone), nothing is checked.
+void check_absolute_tolerances(const BiphasicProblem& problem, const NewtonConfig& newton) {
+  const auto [u_scale, p_scale] = problem.solution_scales();
+  struct Field {
+    const char* key;
+    double atol;
+    double scale;
+    const char* unit;
+    const char* what;
+  };
+  const Field fields[] = {
+      {"time.newton.atol_displacement", newton.atol_displacement,
+       problem.stiffness_scale() * u_scale, "N", "force scale H_A h u"},
+      {"time.newton.atol_pressure", newton.atol_pressure, problem.conductance_scale() * p_scale,
+       "mm^3/s", "volume-rate scale k h p"},
+  };
+  for (const Field& f : fields) {
+    const double limit = kMaxToleranceFraction * f.scale;
+    if (f.scale > 0.0 && !(f.atol <= limit)) {
+      std::ostringstream msg;
+      msg << f.key << " = " << f.atol << " " << f.unit << " is too large for this problem: "
+          << "its " << f.what << " is " << f.scale << " " << f.unit << ", so at most " << limit
+          << " " << f.unit << " (0.1 %) is accepted; a larger tolerance lets a step be "
+          << "accepted without any Newton iteration (the default is 1e-12 N, 1e-15 mm^3/s)";
+      throw std::invalid_argument(msg.str());
+    }
   }
 }
 
@@ -50,7 +66,7 @@ struct BackwardEuler::Impl {
   LinearSolverPtr ls;
   std::vector<double> y_old, ydot, last_residual;
   double t = 0.0, dt = 1.0;
-  std::string failure;  ///< message of a failed residual evaluation
+  CallbackFailure failure;  ///< an exception caught in the last residual or Jacobian callback
 
   Impl(BiphasicProblem& p, const TimeConfig& tc) : problem(p), time(tc) {}
   ~Impl() {
@@ -67,38 +83,34 @@ struct BackwardEuler::Impl {
     for (Index i = 0; i < n; ++i) ydot[i] = (yv[i] - y_old[i]) / dt;
   }
 
+  // Callbacks: an inverted element is recoverable (KINSOL shortens its step; the step is cut
+  // back), any other exception unrecoverable; either is stored for the failure message.
   static int residual_fn(N_Vector yv, N_Vector fv, void* data) {
     auto* self = static_cast<Impl*>(data);
-    try {
+    return guarded_callback(self->failure, [&] {
       self->rate(N_VGetArrayPointer(yv));
       self->problem.residual(self->t, N_VGetArrayPointer(yv), self->ydot.data(),
                              N_VGetArrayPointer(fv));
       std::copy_n(N_VGetArrayPointer(fv), self->problem.size(), self->last_residual.data());
-      return 0;
-    } catch (const InvertedElement& e) {
-      self->failure = e.what();
-      return 1;  // recoverable: KINSOL may shorten the step
-    }
+    });
   }
 
   static int jacobian_fn(N_Vector yv, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
-    self->problem.pattern().restore_into(J);
-    try {
+    return guarded_callback(self->failure, [&] {
+      self->problem.pattern().restore_into(J);
       self->rate(N_VGetArrayPointer(yv));
       self->problem.jacobian(self->t, N_VGetArrayPointer(yv), self->ydot.data(), 1.0 / self->dt,
                              SUNSparseMatrix_Data(J));
-      return 0;
-    } catch (const InvertedElement& e) {
-      self->failure = e.what();
-      return 1;
-    }
+    });
   }
 };
 
 BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
                              const LinearSolverConfig& linear_solver)
     : impl_(std::make_unique<Impl>(problem, time)) {
+  checked_interval_count(time.t_end, time.dt);  // a step count that fits, before any work
+  check_absolute_tolerances(problem, time.newton);
   Impl& m = *impl_;
   if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
   const Index n = problem.size();
@@ -141,7 +153,7 @@ BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
 BackwardEuler::~BackwardEuler() = default;
 
 int BackwardEuler::planned_outputs() const {
-  return interval_count(impl_->time.t_end, impl_->time.dt);
+  return checked_interval_count(impl_->time.t_end, impl_->time.dt);
 }
 
 void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
@@ -150,7 +162,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
   const NewtonConfig& newton = m.time.newton;
   const Index n = problem.size();
   const double t_end = m.time.t_end;
-  const int num_steps = interval_count(t_end - t0, m.time.dt);
+  const int num_steps = checked_interval_count(t_end - t0, m.time.dt);
   double* yv = N_VGetArrayPointer(m.y);
   double* fs = N_VGetArrayPointer(m.fscale);
   std::vector<double> F(n);
@@ -160,10 +172,13 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
 
   // One step from (t, y) to t_next; the solution is left in yv. Returns the reason of a
   // failure (empty on success) and adds the Newton iterations to `iterations`; `newton_ran`
-  // tells whether KINSOL ran (its last residual is then meaningful).
+  // tells whether KINSOL ran (its last residual is then meaningful), `fatal` that a smaller
+  // step cannot help (an exception other than an inverted element).
   bool newton_ran = false;
+  bool fatal = false;
   auto solve_step = [&](double t, double t_next, long& iterations) -> std::string {
     newton_ran = false;
+    fatal = false;
     m.dt = t_next - t;
     m.t = t_next;
     if (m.time.volume_rate == VolumeRate::Conservative) problem.set_conservative_volume_rate(m.dt);
@@ -177,7 +192,14 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     try {
       problem.residual(t_next, yv, m.ydot.data(), F.data());
     } catch (const InvertedElement& e) {
-      return std::string("predictor: ") + e.what();
+      return std::string(
+                 "the step's first trial state (the previous state with the new "
+                 "boundary values) inverts an element: ") +
+             e.what();
+    } catch (const std::exception& e) {
+      fatal = true;
+      return std::string("the residual could not be evaluated at the step's first trial state: ") +
+             e.what();
     }
     const auto [ru0, rp0] = problem.field_norms(F.data());
     const double su = 1.0 / std::max(newton.rtol_displacement * ru0, newton.atol_displacement);
@@ -208,15 +230,23 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       KINSetMaxSetupCalls(m.kin, attempt == 0 ? newton.max_setup_calls : 1);
       if (attempt > 0) initial_guess();
       m.failure.clear();
+      ls_stats_.last_error.clear();
       flag = KINSol(m.kin, m.y, attempt == 2 ? KIN_LINESEARCH : KIN_NONE, m.uscale, m.fscale);
       long nni = 0;
       KINGetNumNonlinSolvIters(m.kin, &nni);
       iterations += nni;
       if (flag >= 0) return {};
       ++stats_.nonlinear_failures;
+      // An exception other than an inverted element, in a callback or the linear solver: the
+      // same again would fail the same way.
+      if ((!m.failure.empty() && !m.failure.recoverable) || !ls_stats_.last_error.empty()) {
+        fatal = true;
+        break;
+      }
     }
-    std::string reason = kinsol_reason(flag);
-    if (!m.failure.empty()) reason += " (" + m.failure + ")";
+    std::string reason = kinsol_flag_message(flag);
+    if (!m.failure.empty()) reason += ": " + m.failure.message;
+    if (!ls_stats_.last_error.empty()) reason += ": " + ls_stats_.last_error;
     return reason;
   };
 
@@ -238,7 +268,7 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       const double t_next = t + h >= t_out - 1e-9 * h ? t_out : t + h;
       const std::string reason = solve_step(t, t_next, iterations);
       if (!reason.empty()) {
-        if (level >= newton.max_cutbacks) {
+        if (level >= newton.max_cutbacks || fatal) {
           std::ostringstream msg;
           msg << "backward Euler step " << step << " (t = " << t_next << " s, dt = " << m.dt
               << " s";

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/solver_messages.hpp"
 
 namespace biphasic {
 
@@ -24,29 +25,6 @@ struct SundialsContext {
   }
   ~SundialsContext() { SUNContext_Free(&ctx); }
 };
-
-std::string ida_reason(int flag) {
-  switch (flag) {
-    case IDA_TOO_MUCH_WORK:
-      return "too many internal steps (time.bdf.max_steps)";
-    case IDA_TOO_MUCH_ACC:
-      return "the tolerances cannot be met (too small)";
-    case IDA_ERR_FAIL:
-      return "repeated error-test failures (or the minimum step was reached)";
-    case IDA_CONV_FAIL:
-      return "repeated nonlinear convergence failures";
-    case IDA_LSETUP_FAIL:
-      return "factorisation failed";
-    case IDA_LSOLVE_FAIL:
-      return "linear solve failed";
-    case IDA_RES_FAIL:
-      return "residual evaluation failed";
-    case IDA_REP_RES_ERR:
-      return "repeated recoverable residual failures (inverted elements)";
-    default:
-      return "IDA flag " + std::to_string(flag);
-  }
-}
 
 /// The start must satisfy F(t₀, y₀, ẏ₀) = 0; a momentum residual beyond what the displacement
 /// tolerance allows means a load or prescribed displacement that jumps at t₀ (IDA does not
@@ -99,8 +77,8 @@ struct BdfIntegrator::Impl {
   N_Vector yy = nullptr, yp = nullptr, atol = nullptr, tmp = nullptr;
   SUNMatrix A = nullptr;
   LinearSolverPtr ls;
-  std::string failure;
-  double cj = 1.0;  ///< shift of the last Jacobian [1/s]
+  CallbackFailure failure;  ///< an exception caught in the last residual or Jacobian callback
+  double cj = 1.0;          ///< shift of the last Jacobian [1/s]
   /// ∂F/∂ẏ and c_j of the last Jacobian, for the shift-corrected solver.
   ShiftedMatrixFamily family;
   bool shift_correction = false;
@@ -115,45 +93,34 @@ struct BdfIntegrator::Impl {
       if (v) N_VDestroy(v);
   }
 
+  // Callbacks: no exception may cross IDA's C frames. An inverted element is recoverable (IDA
+  // reduces the step), any other exception unrecoverable; either is stored for the message.
   static int residual_fn(realtype t, N_Vector y, N_Vector ydot, N_Vector r, void* data) {
     auto* self = static_cast<Impl*>(data);
-    try {
+    return guarded_callback(self->failure, [&] {
       self->problem.residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot),
                              N_VGetArrayPointer(r));
-      return 0;
-    } catch (const InvertedElement& e) {
-      self->failure = e.what();
-      return 1;  // recoverable: IDA reduces the step
-    } catch (const std::exception& e) {
-      self->failure = e.what();
-      return -1;  // no exception may cross IDA's C frames
-    }
+    });
   }
 
   static int jacobian_fn(realtype t, realtype cj, N_Vector y, N_Vector ydot, N_Vector, SUNMatrix J,
                          void* data, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
-    self->problem.pattern().restore_into(J);
     self->cj = cj;
-    try {
+    return guarded_callback(self->failure, [&] {
+      self->problem.pattern().restore_into(J);
       self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
                              SUNSparseMatrix_Data(J),
                              self->shift_correction ? self->family.rate_values.data() : nullptr);
       self->family.setup_shift = cj;
-      return 0;
-    } catch (const InvertedElement& e) {
-      self->failure = e.what();
-      return 1;
-    } catch (const std::exception& e) {
-      self->failure = e.what();
-      return -1;
-    }
+    });
   }
 };
 
 BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
                              const LinearSolverConfig& linear_solver, std::string step_log_path)
     : impl_(std::make_unique<Impl>(problem, time, linear_solver, std::move(step_log_path))) {
+  checked_interval_count(time.t_end, time.dt);  // an output count that fits, before any work
   if (time.volume_rate != VolumeRate::Incremental)
     throw std::invalid_argument(
         "time.volume_rate = \"conservative\" applies only to backward Euler");
@@ -195,7 +162,7 @@ BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
 BdfIntegrator::~BdfIntegrator() = default;
 
 int BdfIntegrator::planned_outputs() const {
-  return interval_count(impl_->time.t_end, impl_->time.dt);
+  return checked_interval_count(impl_->time.t_end, impl_->time.dt);
 }
 
 void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& observer) {
@@ -266,7 +233,8 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       if (m.shift_correction)
         check(IDASetLinearSolutionScaling(m.ida, SUNFALSE), "IDASetLinearSolutionScaling");
       check(IDASetMaxOrd(m.ida, bdf.max_order), "IDASetMaxOrd");
-      check(IDASetMaxNumSteps(m.ida, bdf.max_steps), "IDASetMaxNumSteps");
+      // time.bdf.max_steps is counted here, between outputs: IDA's own limit (IDASetMaxNumSteps)
+      // applies within one IDASolve call, which IDA_ONE_STEP makes a single step.
       if (bdf.max_step > 0) check(IDASetMaxStep(m.ida, bdf.max_step), "IDASetMaxStep");
       check(IDASetDeltaCjLSetup(m.ida, bdf.delta_cj), "IDASetDeltaCjLSetup");
       check(IDASetEtaMax(m.ida, bdf.max_growth), "IDASetEtaMax");
@@ -312,18 +280,41 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
   check(IDASetStopTime(m.ida, target()), "IDASetStopTime");
   std::pair<long, long> at_last_output{0, 0};
   std::vector<double> y_out(n), ydot_out(n), F(n);
+  long steps_since_output = 0;
+  // Names the output interval, the internal step, t, h and the cause of a failure.
+  auto failure = [&](double t, double h, const std::string& cause) {
+    std::ostringstream msg;
+    msg << "BDF output step " << next_output << " (towards t = " << output_time(next_output)
+        << " s): internal step " << totals().first + 1 << " from t = " << t << " s, h = " << h
+        << " s failed: " << cause;
+    return StepFailure(msg.str());
+  };
+  double t_reached = t0;
   while (next_output <= outputs) {
+    if (steps_since_output >= bdf.max_steps) {
+      double h = 0.0;
+      IDAGetLastStep(m.ida, &h);
+      std::ostringstream cause;
+      cause << "time.bdf.max_steps = " << bdf.max_steps
+            << " internal steps taken since the previous output, the last of h = " << h
+            << " s; the step size collapsed (a stiff or singular response), or the output "
+               "interval time.dt is long for the solution's time scale (IDA_TOO_MUCH_WORK)";
+      throw failure(t_reached, h, cause.str());
+    }
     double tret = t0;
     m.failure.clear();
+    ls_stats_.last_error.clear();
     const int flag = IDASolve(m.ida, target(), &tret, m.yy, m.yp, IDA_ONE_STEP);
     if (flag < 0) {
-      std::ostringstream msg;
       double h = 0.0;
       IDAGetCurrentStep(m.ida, &h);
-      msg << "BDF step at t = " << tret << " s (h = " << h << " s) failed: " << ida_reason(flag);
-      if (!m.failure.empty()) msg << " (" << m.failure << ")";
-      throw StepFailure(msg.str());
+      std::string cause = ida_flag_message(flag, h);
+      if (!m.failure.empty()) cause += ": " + m.failure.message;
+      if (!ls_stats_.last_error.empty()) cause += ": " + ls_stats_.last_error;
+      throw failure(tret, h, cause);
     }
+    ++steps_since_output;
+    t_reached = tret;
     double h = 0.0;
     int q = 0;
     IDAGetLastStep(m.ida, &h);
@@ -348,7 +339,15 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       info.internal_steps = static_cast<int>(now.first - at_last_output.first);
       info.newton_iterations = static_cast<int>(now.second - at_last_output.second);
       at_last_output = now;
-      problem.residual(to, y_out.data(), ydot_out.data(), F.data());
+      steps_since_output = 0;
+      try {
+        problem.residual(to, y_out.data(), ydot_out.data(), F.data());
+      } catch (const std::exception& e) {
+        throw failure(tret, h,
+                      std::string("the solution interpolated at the output time could not be "
+                                  "evaluated: ") +
+                          e.what());
+      }
       std::tie(info.residual_u, info.residual_p) = problem.field_norms(F.data());
       if (observer) observer(info, y_out, ydot_out);
       ++next_output;

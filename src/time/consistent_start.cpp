@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -110,6 +111,12 @@ PressureRole pressure_role(const BiphasicProblem& problem) {
 }
 
 namespace {
+
+std::string consistent_start_failure(double t, const std::string& cause) {
+  std::ostringstream msg;
+  msg << "the consistent initial values at t = " << t << " s could not be computed: " << cause;
+  return msg.str();
+}
 
 /// One pass: (y₀, ẏ₀) from the given displacements. If the momentum rows that no rate can
 /// balance (the algebraic constraints) are left out of balance by more than `tolerance` [N],
@@ -228,7 +235,7 @@ ConsistentState consistent_pass(BiphasicProblem& problem, double t, const std::v
         if (!fixed[i]) correction[i] = i < nu || p_value ? w[i] : eps * w[i];
     }
   } catch (const std::runtime_error& e) {
-    throw StepFailure("consistent initial values at t = " + std::to_string(t) + " s: " + e.what());
+    throw StepFailure(consistent_start_failure(t, e.what()));
   }
   return out;
 }
@@ -242,16 +249,22 @@ ConsistentState consistent_start(BiphasicProblem& problem, double t, const std::
   const double force_scale = problem.stiffness_scale() * problem.solution_scales().first;
   const double tolerance = 1e-12 * (force_scale > 0.0 ? force_scale : problem.stiffness_scale());
   std::vector<double> correction;
-  ConsistentState out = consistent_pass(problem, t, y, solver, stats, tolerance, correction);
-  for (int k = 0; k < kMaxCorrections && !correction.empty(); ++k) {
-    std::vector<double> corrected = out.y;
-    for (std::size_t i = 0; i < corrected.size(); ++i) corrected[i] += correction[i];
-    ConsistentState next =
-        consistent_pass(problem, t, corrected, solver, stats, tolerance, correction);
-    if (!(next.residual_u < out.residual_u)) break;
-    out = std::move(next);
+  try {
+    ConsistentState out = consistent_pass(problem, t, y, solver, stats, tolerance, correction);
+    for (int k = 0; k < kMaxCorrections && !correction.empty(); ++k) {
+      std::vector<double> corrected = out.y;
+      for (std::size_t i = 0; i < corrected.size(); ++i) corrected[i] += correction[i];
+      ConsistentState next =
+          consistent_pass(problem, t, corrected, solver, stats, tolerance, correction);
+      if (!(next.residual_u < out.residual_u)) break;
+      out = std::move(next);
+    }
+    return out;
+  } catch (const StepFailure&) {
+    throw;
+  } catch (const std::exception& e) {  // e.g. an element inverted by the given state
+    throw StepFailure(consistent_start_failure(t, e.what()));
   }
-  return out;
 }
 
 }  // namespace biphasic

@@ -83,6 +83,32 @@ std::vector<double> final_pressure(const Mesh& mesh, const Config& cfg) {
 // The reference loading (5 steps) on a coarse quarter cylinder: the pressure at t = 32 s
 // agrees with the direct solver's to 1e-8 of its maximum. The GLS case uses k = 0.1, where
 // the GLS term does not dominate the displacement block (see docs/performance.md).
+// linear_solver.krylov.max_iterations caps the FGMRES iterations of a solve exactly, below the
+// restart length as well as at a number that is not a multiple of it (a tolerance of 1e-15
+// cannot be met, so each solve uses every iteration allowed).
+TEST(IterativeSolver, MakesExactlyMaxIterations) {
+  const double cj = 1.0 / 6.4;
+  test::BoxSystem sys(Stabilisation::Gls, cj);
+  const SaddlePointStructure saddle = sys.problem.saddle_point_structure([cj] {
+    return std::pair{cj, cj};
+  });
+  for (const auto& [max_iterations, restart] : {std::pair{7, 100}, std::pair{23, 10}}) {
+    LinearSolverStats stats;
+    LinearSolverConfig config;
+    config.type = LinearSolverType::Iterative;
+    config.krylov.rtol = 1e-15;
+    config.krylov.max_iterations = max_iterations;
+    config.krylov.restart = restart;
+    LinearSolverPtr ls = make_linear_solver(config, sys.ctx, &stats, {}, &saddle);
+    ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+    SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0);
+    EXPECT_EQ(stats.max_krylov_iterations, max_iterations)
+        << "max_iterations " << max_iterations << ", restart " << restart;
+    EXPECT_EQ(stats.krylov_iterations, max_iterations);
+  }
+}
+
 TEST(IterativeSolverRun, SameAnswerAsDirectSolver) {
   const std::pair<Stabilisation, double> cases[] = {{Stabilisation::None, 1e-3},
                                                     {Stabilisation::FluxPerturbation, 1e-3},

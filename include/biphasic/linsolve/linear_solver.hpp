@@ -33,6 +33,9 @@ struct LinearSolverStats {
   long shift_corrected_solves = 0;  ///< solves at a c_j other than the factorised one
   long shift_correction_iterations = 0;  ///< their GMRES iterations (one old-factor solve each)
   long shift_correction_failures = 0;    ///< of which did not converge (IDA then refactorises)
+  /// Message of an exception caught in the last set-up or solve (which then reported an
+  /// unrecoverable failure to the integrator); empty after one that did not throw.
+  std::string last_error;
 };
 
 /// The matrices A(c) = ∂F/∂y + c ∂F/∂ẏ of a time integrator (c = IDA's c_j), as the

@@ -148,6 +148,9 @@ class BiphasicProblem {
   /// Stiffness scale H_A · (mean element size) [N/mm]: turns a displacement into a force, e.g.
   /// to compare a momentum residual with a displacement tolerance.
   double stiffness_scale() const { return row_scale_u_; }
+  /// Conductance scale k · (mean element size) [mm³/(s MPa)]: turns a pressure into a mass
+  /// residual (a volume rate).
+  double conductance_scale() const { return row_scale_p_; }
 
  private:
   struct Dirichlet {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -75,9 +77,30 @@ inline double default_first_step(double output_interval, double time_to_first_st
   return 1e-2 * std::min(output_interval, time_to_first_stop);
 }
 
-/// Number of intervals of length dt in [0, t_end], the last one shortened to land on t_end.
-inline int interval_count(double t_end, double dt) {
-  return std::max(1, static_cast<int>(std::ceil(t_end / dt - 1e-9)));
+/// Largest number of output intervals t_end / time.dt a run may have (10⁷; the case file is
+/// refused beyond it): more would not fit a step counter, and would take months to write.
+inline constexpr long long kMaxOutputIntervals = 10'000'000;
+
+/// Number of intervals of length dt in [0, t_end], the last one shortened to land on t_end:
+/// ⌈t_end / dt⌉ (to within 1e-9 of an interval), at least 1. Computed in double and returned
+/// in 64 bits, saturated at the largest long long (t_end / dt may be 1e316 or infinite).
+inline long long interval_count(double t_end, double dt) {
+  const double count = std::ceil(t_end / dt - 1e-9);
+  if (!(count < 9.0e18)) return std::numeric_limits<long long>::max();
+  return std::max(1LL, static_cast<long long>(count));
+}
+
+/// interval_count as an int for the integrators; throws std::invalid_argument naming time.dt
+/// and time.t_end when the count exceeds kMaxOutputIntervals.
+inline int checked_interval_count(double t_end, double dt) {
+  const long long count = interval_count(t_end, dt);
+  if (count > kMaxOutputIntervals) {
+    std::ostringstream msg;
+    msg << "time.t_end / time.dt = " << t_end << " s / " << dt << " s gives " << count
+        << " steps, more than the " << kMaxOutputIntervals << " allowed";
+    throw std::invalid_argument(msg.str());
+  }
+  return static_cast<int>(count);
 }
 
 /// What run_case drives: backward Euler or BDF over one BiphasicProblem.

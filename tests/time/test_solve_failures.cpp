@@ -1,0 +1,204 @@
+// Failures that used to pass silently, and failure messages in words: step counts beyond an
+// int, absolute Newton tolerances that accept any state, time.bdf.max_steps, exceptions inside
+// SUNDIALS callbacks, and SUNDIALS return flags as sentences.
+#include <gtest/gtest.h>
+
+#include <ida/ida.h>
+#include <kinsol/kinsol.h>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "biphasic/io/case_file.hpp"
+#include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/bdf_integrator.hpp"
+#include "biphasic/time/solver_messages.hpp"
+
+namespace biphasic {
+namespace {
+
+/// 1 × 1 × 1 mm confined column, 4 layers, drained top pushed down 5 % over the first second,
+/// then held; outputs every second to t = 4 s.
+const char* kCase = R"(
+format_version = 1
+[mesh]
+source = "column"
+[mesh.column]
+nz = 4
+[material]
+lambda = 0.2
+mu = 0.5
+permeability = 1e-2
+[curves]
+ramp = [[0.0, 0.0], [1.0, 1.0]]
+[[boundary]]
+name = "top"
+type = "displacement"
+component = "z"
+value = -0.05
+curve = "ramp"
+[[boundary]]
+name = "top"
+type = "pressure"
+value = 0.0
+[[boundary]]
+name = "bottom"
+type = "displacement"
+component = "z"
+value = 0.0
+[[boundary]]
+name = "x0"
+type = "symmetry"
+[[boundary]]
+name = "y0"
+type = "symmetry"
+[time]
+t_end = 4.0
+dt = 1.0
+[linear_solver]
+type = "klu"
+ordering = "amd"
+[output]
+fields = false
+)";
+
+Config config(const std::vector<std::string>& overrides = {}) {
+  return parse_case(kCase, "failures.toml", overrides, ".");
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(StepCount, IsComputedBeyondTheRangeOfInt) {
+  EXPECT_EQ(interval_count(32.0, 6.4), 5);
+  EXPECT_EQ(interval_count(1.0, 0.3), 4);                  // the last interval shortened
+  EXPECT_EQ(interval_count(1.0, 2.0), 1);                  // at least one
+  EXPECT_EQ(interval_count(32.0, 1e-8), 3'200'000'000LL);  // > 2^31
+  EXPECT_EQ(interval_count(1e308, 1.0), std::numeric_limits<long long>::max());
+  EXPECT_EQ(interval_count(1e308, 1e-300), std::numeric_limits<long long>::max());  // inf
+}
+
+TEST(StepCount, IntegratorsRefuseMoreStepsThanTheLimit) {
+  EXPECT_EQ(checked_interval_count(10.0, 1e-6), 10'000'000);
+  for (const auto& [t_end, dt] : {std::pair{32.0, 1e-8}, std::pair{1e308, 1.0}}) {
+    try {
+      checked_interval_count(t_end, dt);
+      FAIL() << "accepted t_end " << t_end << ", dt " << dt;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_TRUE(contains(e.what(), "time.dt")) << e.what();
+      EXPECT_TRUE(contains(e.what(), "time.t_end")) << e.what();
+    }
+  }
+}
+
+// An absolute tolerance as large as the loads accepts the initial guess of every step after
+// zero Newton iterations (p stays 0): refused before the first step, naming key and value.
+TEST(NewtonTolerance, AbsurdAbsoluteToleranceIsRefused) {
+  for (const char* key : {"time.newton.atol_displacement", "time.newton.atol_pressure"}) {
+    const Config cfg = config({std::string(key) + "=1e308"});
+    const Mesh mesh = generate_column(cfg.mesh.column);
+    BiphasicProblem problem(mesh, cfg);
+    try {
+      BackwardEuler be(problem, cfg.time, cfg.linear_solver);
+      FAIL() << key << " = 1e308 accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_TRUE(contains(e.what(), std::string(key) + " = 1e+308")) << e.what();
+    }
+  }
+}
+
+TEST(NewtonTolerance, DefaultToleranceSolvesEveryStep) {
+  const Config cfg = config();
+  const Mesh mesh = generate_column(cfg.mesh.column);
+  BiphasicProblem problem(mesh, cfg);
+  BackwardEuler be(problem, cfg.time, cfg.linear_solver);
+  std::vector<double> y(problem.size(), 0.0);
+  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  int loaded_steps = 0;
+  be.run(0.0, y, [&](const StepInfo& info, const std::vector<double>& ys, auto&) {
+    if (info.step == 1) {
+      EXPECT_GT(info.newton_iterations, 0);
+      double p_max = 0.0;
+      for (Index i = problem.num_u(); i < problem.size(); ++i) p_max = std::max(p_max, ys[i]);
+      EXPECT_GT(p_max, 1e-3);  // the undrained response of a 5 % push [MPa]
+      ++loaded_steps;
+    }
+  });
+  EXPECT_EQ(loaded_steps, 1);
+}
+
+// time.bdf.max_steps limits the internal steps between two outputs (IDA's own limit does not
+// act in one-step mode).
+TEST(BdfMaxSteps, TinyLimitStopsTheRunWithAClearMessage) {
+  const Config cfg = config({"time.integrator=\"bdf\"", "time.bdf.max_steps=3"});
+  const Mesh mesh = generate_column(cfg.mesh.column);
+  BiphasicProblem problem(mesh, cfg);
+  BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
+  std::vector<double> y(problem.size(), 0.0);
+  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  try {
+    bdf.run(0.0, y, nullptr);
+    FAIL() << "ran with at most 3 internal steps per output";
+  } catch (const StepFailure& e) {
+    const std::string what = e.what();
+    EXPECT_TRUE(contains(what, "BDF output step 1 (towards t = 1 s)")) << what;
+    EXPECT_TRUE(contains(what, "time.bdf.max_steps = 3 internal steps taken")) << what;
+    EXPECT_TRUE(contains(what, "h = ")) << what;
+  }
+  EXPECT_EQ(bdf.stats().steps, 0);  // accumulated only at the end
+}
+
+TEST(BdfMaxSteps, EnoughStepsRunToTheEnd) {
+  const Config cfg = config({"time.integrator=\"bdf\"", "time.bdf.max_steps=500"});
+  const Mesh mesh = generate_column(cfg.mesh.column);
+  BiphasicProblem problem(mesh, cfg);
+  BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
+  std::vector<double> y(problem.size(), 0.0);
+  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  int outputs = 0;
+  bdf.run(0.0, y, [&](const StepInfo& info, auto&, auto&) {
+    EXPECT_LE(info.internal_steps, 500);
+    ++outputs;
+  });
+  EXPECT_EQ(outputs, 4);
+}
+
+TEST(Callbacks, EveryExceptionIsCaughtStoredAndFlagged) {
+  CallbackFailure failure;
+  EXPECT_EQ(guarded_callback(failure, [] {}), 0);
+  EXPECT_TRUE(failure.empty());
+  EXPECT_EQ(guarded_callback(failure, [] { throw InvertedElement("element 3: J = -0.1"); }), 1);
+  EXPECT_EQ(failure.message, "element 3: J = -0.1");
+  EXPECT_TRUE(failure.recoverable);
+  EXPECT_EQ(guarded_callback(failure, [] { throw std::bad_alloc(); }), -1);
+  EXPECT_FALSE(failure.recoverable);
+  EXPECT_FALSE(failure.empty());
+  EXPECT_EQ(guarded_callback(failure, [] { throw 42; }), -1);
+  EXPECT_EQ(failure.message, "an exception of unknown type");
+}
+
+// Every flag KINSol and IDASolve can return reads as a sentence with the flag's name.
+TEST(SolverMessages, EveryFlagIsASentenceWithItsName) {
+  for (int flag = -17; flag <= 2; ++flag) {
+    const std::string text = kinsol_flag_message(flag);
+    EXPECT_FALSE(contains(text, "KINSOL return")) << flag << ": " << text;
+    EXPECT_TRUE(contains(text, "KIN_") || contains(text, "KINSOL memory")) << flag << ": " << text;
+  }
+  for (int flag : {-1,  -2,  -3,  -4,  -5,  -6,  -7,  -8,  -9,  -10, -11, -12, -13, -14, -15,
+                   -16, -17, -20, -21, -22, -23, -24, -25, -26, -27, -28, -29, 0,   1}) {
+    const std::string text = ida_flag_message(flag, 1e-9);
+    EXPECT_FALSE(contains(text, "IDA return")) << flag << ": " << text;
+    EXPECT_TRUE(contains(text, "IDA_") || contains(text, "IDA memory")) << flag << ": " << text;
+  }
+  EXPECT_EQ(ida_flag_message(IDA_CONV_FAIL, 1e-9),
+            "the Newton iteration failed to converge repeatedly (h reduced to 1e-09 s) "
+            "(IDA_CONV_FAIL)");
+  EXPECT_TRUE(contains(kinsol_flag_message(KIN_MAXITER_REACHED), "time.newton.max_iterations"));
+  EXPECT_TRUE(contains(kinsol_flag_message(-99), "KINSOL return -99"));  // unknown: the number
+}
+
+}  // namespace
+}  // namespace biphasic
