@@ -239,8 +239,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     nlohmann::json o = measures_json(m);
     o["t"] = t;
     if (reaction_csv) {
-      const auto& names = config.output.reactions;
-      const auto forces = problem.reactions(names, t, y.data(), ydot.data());
+      const auto names = BiphasicProblem::reaction_labels(config.output.reactions);
+      const auto forces = problem.reactions(config.output.reactions, t, y.data(), ydot.data());
       reaction_csv->write(t, names, forces);
       nlohmann::json r = nlohmann::json::object();
       for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];

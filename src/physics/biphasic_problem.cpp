@@ -519,7 +519,22 @@ std::vector<std::array<double, 3>> BiphasicProblem::reactions(
   std::vector<std::array<double, 3>> out(boundaries.size(), {0.0, 0.0, 0.0});
   for (std::size_t b = 0; b < rows.size(); ++b)
     for (Index dof : *rows[b]) out[b][dof % 3] += F[dof];  // u_dof(n, c) = 3n + c
+  if (rows.size() >= 2) {
+    // The total counts a row held by several listed boundaries (a shared edge) once.
+    std::set<Index> all;
+    for (const auto* r : rows) all.insert(r->begin(), r->end());
+    std::array<double, 3> total{0.0, 0.0, 0.0};
+    for (Index dof : all) total[dof % 3] += F[dof];
+    out.push_back(total);
+  }
   return out;
+}
+
+std::vector<std::string> BiphasicProblem::reaction_labels(
+    const std::vector<std::string>& boundaries) {
+  std::vector<std::string> labels = boundaries;
+  if (boundaries.size() >= 2) labels.push_back(kReactionTotal);
+  return labels;
 }
 
 BiphasicProblem::FluidRates BiphasicProblem::fluid_rates(double t, const double* y,
