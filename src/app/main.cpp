@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "biphasic/app/preflight.hpp"
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/time/time_integrator.hpp"
@@ -13,7 +14,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   biphasic run CASE.toml [-o DIR] [--set KEY=VALUE ...] [--quiet]
-  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) only
+  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) on its mesh
   biphasic schema            print the case-file reference (Markdown)
   biphasic --help | --version
 
@@ -58,6 +59,7 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   if (validate_only) {
+    for (const std::string& note : biphasic::check_case(config)) std::cout << note << "\n";
     std::cout << case_path << ": valid\n";
     return 0;
   }

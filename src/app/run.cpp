@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "biphasic/app/preflight.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
@@ -151,9 +152,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       (config.title.empty() ? config.case_file : config.title));
   auto t0 = Clock::now();
   bool mesh_from_cache = false;
-  const Mesh mesh = build_mesh(config, out_dir.string(), &mesh_from_cache);
+  const Mesh mesh = build_case_mesh(config, out_dir.string(), &mesh_from_cache);
   const double mesh_seconds = seconds_since(t0);
-  check_boundaries(config, mesh.boundary_names());
+  for (const std::string& note : preflight(config, mesh)) say(note);
 
   t0 = Clock::now();
   BiphasicProblem problem(mesh, config);

@@ -208,7 +208,12 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
     const Boundary* b = mesh.find_boundary(bc.boundary);
-    if (!b) throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
+    const NodeSet* node_set = b ? nullptr : mesh.find_node_set(bc.boundary);
+    if (!b && !node_set)
+      throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
+    if (node_set && bc.type != BcType::Displacement)
+      throw std::runtime_error(bc_label(i, bc) +
+                               ": only displacement conditions apply to a physical point or curve");
     const LoadCurve* curve = nullptr;
     if (!bc.curve.empty()) {
       auto it = curves_.find(bc.curve);
@@ -217,7 +222,9 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       curve = &it->second;
     }
     std::set<Index> nodes, vertices;
-    for (const Tri6& f : b->faces) {
+    if (node_set) nodes.insert(node_set->nodes.begin(), node_set->nodes.end());
+    static const std::vector<Tri6> kNoFaces;
+    for (const Tri6& f : b ? b->faces : kNoFaces) {
       nodes.insert(f.begin(), f.end());
       vertices.insert(f.begin(), f.begin() + 3);
     }
