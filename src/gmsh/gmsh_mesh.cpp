@@ -571,7 +571,11 @@ Mesh mesh_with_gmsh(const GmshSizing& sizing, const std::string& write_msh,
       throw std::runtime_error("could not write '" + write_msh + "'");
     }
   }
-  return extract_current_model();
+  // A generated mesh has no file whose node tags messages could refer to (and the mesh cache
+  // would not keep them).
+  Mesh mesh = extract_current_model();
+  mesh.file_tags.clear();
+  return mesh;
 }
 
 std::vector<int> classify_surfaces(std::span<const char* const> names, const std::string& geometry,

@@ -180,3 +180,17 @@ TEST(MeshNodeSets, PhysicalPointsAndCurvesBecomeNodeSetsWithTheirEdgeNodes) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(MeshNodeSets, GeneratedMeshesHaveNoFileTagsOrNodeSets) {
+  biphasic::QuarterCylinderSpec spec;
+  spec.lc = 4.0;
+  const biphasic::Mesh mesh = biphasic::generate_quarter_cylinder(spec);
+  // Nothing the mesh cache would lose: messages name nodes by index and position only.
+  EXPECT_TRUE(mesh.file_tags.empty());
+  EXPECT_TRUE(mesh.node_sets.empty());
+  EXPECT_EQ(mesh.describe_node(0).find("file tag"), std::string::npos);
+}
+
+}  // namespace
