@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   biphasic run CASE.toml [-o DIR] [--set KEY=VALUE ...] [--quiet]
-  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) only
+  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) on its mesh
   biphasic schema            print the case-file reference (Markdown)
   biphasic --help | --version
 
@@ -60,10 +61,10 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   if (validate_only) {
-    // Probe points must lie in the body: this builds the mesh.
-    const std::vector<std::string> probes = biphasic::check_probes(config);
+    // Builds the mesh: names, formulas, constraints and probe points are checked on it.
+    const std::vector<std::string> notes = biphasic::check_case(config);
     std::cout << case_path << ": valid\n";
-    for (const std::string& line : probes) std::cout << "  " << line << "\n";
+    for (const std::string& note : notes) std::cout << note << "\n";
     return 0;
   }
   options.output_dir =

@@ -122,12 +122,9 @@ std::vector<Probe> build_probes(const Config& config, const Mesh& mesh) {
   return probes;
 }
 
-std::vector<std::string> check_probes(const Config& config) {
-  if (!config.output.line && config.output.probes.empty()) return {};
-  Config quiet = config;
-  quiet.mesh.cylinder.write_msh.clear();  // check writes no files
+std::vector<std::string> check_probes(const Config& config, const Mesh& mesh) {
   std::vector<std::string> lines;
-  for (const Probe& probe : build_probes(config, build_mesh(quiet, "."))) {
+  for (const Probe& probe : build_probes(config, mesh)) {
     const LineProbe& s = probe.samples;
     lines.push_back(
         (probe.measured ? std::string("probe line") : "probe \"" + probe.name + "\"") + " from " +

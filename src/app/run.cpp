@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
@@ -152,9 +153,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       (config.title.empty() ? config.case_file : config.title));
   auto t0 = Clock::now();
   bool mesh_from_cache = false;
-  const Mesh mesh = build_mesh(config, out_dir.string(), &mesh_from_cache);
+  const Mesh mesh = build_case_mesh(config, out_dir.string(), &mesh_from_cache);
   const double mesh_seconds = seconds_since(t0);
-  check_boundaries(config, mesh.boundary_names());
+  for (const std::string& note : preflight(config, mesh)) say(note);
   std::vector<Probe> probes = build_probes(config, mesh);
 
   t0 = Clock::now();
@@ -233,8 +234,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     nlohmann::json o = m ? measures_json(*m) : nlohmann::json::object();
     o["t"] = t;
     if (reaction_csv) {
-      const auto& names = config.output.reactions;
-      const auto forces = problem.reactions(names, t, y.data(), ydot.data());
+      const auto names = BiphasicProblem::reaction_labels(config.output.reactions);
+      const auto forces = problem.reactions(config.output.reactions, t, y.data(), ydot.data());
       reaction_csv->write(t, names, forces);
       nlohmann::json r = nlohmann::json::object();
       for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];

@@ -143,6 +143,92 @@ std::string element_type_name(int type) {
   return "'" + name + "' (gmsh type " + std::to_string(type) + ")";
 }
 
+// Physical points and curves of the current model as node sets of `mesh` (whose nodes are
+// `new_index` of their gmsh tags): a point's node, a curve's segment end points and the edge
+// node of each segment (a linear mesh's straight midpoint, a quadratic mesh's own). Unnamed
+// groups are named by their tag. Throws std::runtime_error naming the group for a node that
+// is no tetrahedron node, or a segment that is no tetrahedron edge.
+std::vector<NodeSet> extract_node_sets(const Mesh& mesh,
+                                       const std::unordered_map<std::size_t, Index>& new_index,
+                                       const std::function<Point(std::size_t)>& coordinates) {
+  std::vector<NodeSet> sets;
+  std::unordered_map<std::uint64_t, Index> edge_node;
+  const auto nv = static_cast<std::uint64_t>(mesh.num_vertices);
+  const auto edge_key = [nv](Index a, Index b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) * nv +
+           static_cast<std::uint64_t>(std::max(a, b));
+  };
+  for (int dim : {0, 1}) {
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups, dim);
+    if (groups.empty()) continue;
+    if (dim == 1 && edge_node.empty()) {
+      for (const Tet10& t : mesh.tets)
+        for (std::size_t e = 0; e < kTetEdges.size(); ++e)
+          edge_node.emplace(edge_key(t[kTetEdges[e][0]], t[kTetEdges[e][1]]), t[4 + e]);
+    }
+    for (const auto& [group_dim, tag] : groups) {
+      std::string name;
+      gmsh::model::getPhysicalName(group_dim, tag, name);
+      if (name.empty()) name = std::to_string(tag);
+      const std::string what =
+          std::string(dim == 0 ? "physical point '" : "physical curve '") + name + "'";
+      auto it = std::find_if(sets.begin(), sets.end(), [&](const NodeSet& s) {
+        return s.name == name && s.dimension == dim;
+      });
+      if (it == sets.end()) {
+        sets.push_back({name, dim, {}});
+        it = std::prev(sets.end());
+      }
+      const auto node_of = [&](std::size_t file_tag) {
+        const auto found = new_index.find(file_tag);
+        if (found == new_index.end()) {
+          const Point x = coordinates(file_tag);
+          std::ostringstream msg;
+          msg << what << ": node tag " << file_tag << " at (" << x[0] << ", " << x[1] << ", "
+              << x[2] << ") is not a node of any tetrahedron (embed it in the volume or on one "
+              << "of its surfaces)";
+          throw std::runtime_error(msg.str());
+        }
+        return found->second;
+      };
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(group_dim, tag, entities);
+      for (const int entity : entities) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elements, nodes;
+        gmsh::model::mesh::getElements(types, elements, nodes, dim, entity);
+        for (std::size_t i = 0; i < types.size(); ++i) {
+          if (elements[i].empty()) continue;
+          const std::size_t per = nodes[i].size() / elements[i].size();
+          for (std::size_t e = 0; e < elements[i].size(); ++e) {
+            const std::size_t* n = nodes[i].data() + e * per;
+            if (dim == 0) {
+              it->nodes.push_back(node_of(n[0]));
+              continue;
+            }
+            const Index a = node_of(n[0]), b = node_of(n[1]);
+            const auto edge = a < mesh.num_vertices && b < mesh.num_vertices
+                                  ? edge_node.find(edge_key(a, b))
+                                  : edge_node.end();
+            if (edge == edge_node.end()) {
+              throw std::runtime_error(what + ": segment (element tag " +
+                                       std::to_string(elements[i][e]) + ", node tags " +
+                                       std::to_string(n[0]) + ", " + std::to_string(n[1]) +
+                                       ") is not an edge of any tetrahedron");
+            }
+            it->nodes.insert(it->nodes.end(), {a, b, edge->second});
+          }
+        }
+      }
+      std::sort(it->nodes.begin(), it->nodes.end());
+      it->nodes.erase(std::unique(it->nodes.begin(), it->nodes.end()), it->nodes.end());
+      if (it->nodes.empty()) throw std::runtime_error(what + " has no mesh nodes");
+    }
+  }
+  return sets;
+}
+
 // Builds a Mesh from the current gmsh model: every 4- or 10-node tetrahedron, and one boundary
 // per physical surface (merged by name). Nodes are renumbered corners first, each group in
 // ascending gmsh tag order; nodes of no tet are dropped.
@@ -319,6 +405,15 @@ Mesh extract_current_model() {
     orient_boundary_faces(mesh);
   }
   check_mesh(mesh);
+  // File tags: corners keep their order in both branches; a linear mesh's edge nodes are new.
+  mesh.file_tags.assign(static_cast<std::size_t>(mesh.num_nodes()), -1);
+  for (std::size_t i = 0; i < corner_tags.size(); ++i)
+    mesh.file_tags[i] = static_cast<Index>(corner_tags[i]);
+  if (quadratic) {
+    for (std::size_t i = 0; i < edge_tags.size(); ++i)
+      mesh.file_tags[corner_tags.size() + i] = static_cast<Index>(edge_tags[i]);
+  }
+  mesh.node_sets = extract_node_sets(mesh, new_index, coordinates);
   return mesh;
 }
 
@@ -476,7 +571,11 @@ Mesh mesh_with_gmsh(const GmshSizing& sizing, const std::string& write_msh,
       throw std::runtime_error("could not write '" + write_msh + "'");
     }
   }
-  return extract_current_model();
+  // A generated mesh has no file whose node tags messages could refer to (and the mesh cache
+  // would not keep them).
+  Mesh mesh = extract_current_model();
+  mesh.file_tags.clear();
+  return mesh;
 }
 
 std::vector<int> classify_surfaces(std::span<const char* const> names, const std::string& geometry,

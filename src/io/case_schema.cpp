@@ -574,8 +574,22 @@ std::vector<Key<Config>> build_global_keys() {
       "output.reactions", {},
       "Boundaries whose reaction force is written at every output (reactions.csv and the "
       "summary): the force [N] that the boundary's displacement and symmetry conditions exert "
-      "on the body, summed over its nodes. Each must carry such a condition.",
+      "on the body, summed over its nodes. Each must carry such a condition. With two or more, "
+      "also their `total`, counting a node held by two of them once.",
       [](auto& c) -> auto& { return c.output.reactions; }));
+
+  keys.push_back(bool_key<C>(
+      "constraints.allow_free_rigid_modes",
+      "Run although the displacement and symmetry conditions leave a rigid-body mode "
+      "(translation or rotation) of the body or of a part of the mesh free; the loads must then "
+      "balance exactly. Without it such a case is refused before the first step "
+      "(docs/constraints.md).",
+      [](auto& c) -> auto& { return c.constraints.allow_free_rigid_modes; }));
+  keys.push_back(bool_key<C>(
+      "constraints.allow_coincident_nodes",
+      "Accept distinct mesh nodes at the same place (a deliberate crack); without it they are "
+      "refused, naming the nodes.",
+      [](auto& c) -> auto& { return c.constraints.allow_coincident_nodes; }));
   return keys;
 }
 
@@ -585,7 +599,9 @@ std::vector<Key<BoundaryCondition>> build_boundary_keys() {
   std::vector<Key<B>> keys;
 
   auto name = string_key<B>(
-      "name", "Name of the mesh boundary (gmsh physical surface).",
+      "name",
+      "Name of the mesh boundary (gmsh physical surface), or for a displacement condition also "
+      "of a gmsh physical point or curve.",
       [](auto& b) -> auto& { return b.boundary; });
   name.required = true;
   name.non_empty = true;

@@ -54,6 +54,24 @@ std::vector<std::string> Mesh::boundary_names() const {
   return names;
 }
 
+const NodeSet* Mesh::find_node_set(const std::string& name) const {
+  const auto it = std::find_if(node_sets.begin(), node_sets.end(),
+                               [&](const NodeSet& s) { return s.name == name; });
+  return it == node_sets.end() ? nullptr : &*it;
+}
+
+std::string Mesh::describe_node(Index n) const {
+  std::ostringstream s;
+  s << "node " << n;
+  if (n >= 0 && static_cast<std::size_t>(n) < file_tags.size() && file_tags[n] >= 0)
+    s << " (file tag " << file_tags[n] << ")";
+  if (n >= 0 && n < num_nodes()) {
+    const Point& x = nodes[static_cast<std::size_t>(n)];
+    s << " at (" << x[0] << ", " << x[1] << ", " << x[2] << ") mm";
+  }
+  return s.str();
+}
+
 double tet_signed_volume(const Point& a, const Point& b, const Point& c, const Point& d) {
   return dot(sub(b, a), cross(sub(c, a), sub(d, a))) / 6.0;
 }

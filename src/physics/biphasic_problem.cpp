@@ -209,7 +209,12 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
     const Boundary* b = mesh.find_boundary(bc.boundary);
-    if (!b) throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
+    const NodeSet* node_set = b ? nullptr : mesh.find_node_set(bc.boundary);
+    if (!b && !node_set)
+      throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
+    if (node_set && bc.type != BcType::Displacement)
+      throw std::runtime_error(bc_label(i, bc) +
+                               ": only displacement conditions apply to a physical point or curve");
     const LoadCurve* curve = nullptr;
     if (!bc.curve.empty()) {
       auto it = curves_.find(bc.curve);
@@ -218,7 +223,9 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       curve = &it->second;
     }
     std::set<Index> nodes, vertices;
-    for (const Tri6& f : b->faces) {
+    if (node_set) nodes.insert(node_set->nodes.begin(), node_set->nodes.end());
+    static const std::vector<Tri6> kNoFaces;
+    for (const Tri6& f : b ? b->faces : kNoFaces) {
       nodes.insert(f.begin(), f.end());
       vertices.insert(f.begin(), f.begin() + 3);
     }
@@ -522,7 +529,22 @@ std::vector<std::array<double, 3>> BiphasicProblem::reactions(
   std::vector<std::array<double, 3>> out(boundaries.size(), {0.0, 0.0, 0.0});
   for (std::size_t b = 0; b < rows.size(); ++b)
     for (Index dof : *rows[b]) out[b][dof % 3] += F[dof];  // u_dof(n, c) = 3n + c
+  if (rows.size() >= 2) {
+    // The total counts a row held by several listed boundaries (a shared edge) once.
+    std::set<Index> all;
+    for (const auto* r : rows) all.insert(r->begin(), r->end());
+    std::array<double, 3> total{0.0, 0.0, 0.0};
+    for (Index dof : all) total[dof % 3] += F[dof];
+    out.push_back(total);
+  }
   return out;
+}
+
+std::vector<std::string> BiphasicProblem::reaction_labels(
+    const std::vector<std::string>& boundaries) {
+  std::vector<std::string> labels = boundaries;
+  if (boundaries.size() >= 2) labels.push_back(kReactionTotal);
+  return labels;
 }
 
 BiphasicProblem::FluidRates BiphasicProblem::fluid_rates(double t, const double* y,

@@ -50,6 +50,12 @@ name = "bottom"
 type = "displacement"
 component = "z"
 value = 0.0
+[[boundary]]
+name = "symmetry_x"
+type = "symmetry"
+[[boundary]]
+name = "symmetry_y"
+type = "symmetry"
 )";
 
 TEST(Cli, HelpAndVersion) {
@@ -76,7 +82,10 @@ TEST(Cli, BadInputIsReportedWithFileKeyAndValue) {
       {"choice.toml",
        std::string(kValid) + "[stabilisation]\ntype = \"glss\"\n",
        {"stabilisation.type", "glss"}},
-      {"curve.toml", std::string(kValid) + "curve = \"rampp\"\n", {"boundary[0].curve", "rampp"}},
+      {"curve.toml",
+       std::string(kValid) +
+           "[[boundary]]\nname = \"top\"\ntype = \"pressure\"\nvalue = 0.0\ncurve = \"rampp\"\n",
+       {"boundary[3].curve", "rampp"}},
   };
   for (const Case& c : cases) {
     const fs::path file = write_case(c.name, c.text);

@@ -88,21 +88,64 @@ TEST(Reactions, HomogeneousUniaxialStrainMatchesTheClosedForm) {
     std::getline(cells, name, ',');
     for (auto& c : f) std::getline(cells, c, ',');
     const double s = std::stod(t) == 0.0 ? 1.0 : kStretch;
-    const auto expected = expected_reactions(s, kPressure).at(name);
+    // The six supports balance: their total (listed after them) vanishes.
+    const auto expected = name == "total" ? std::array<double, 3>{0.0, 0.0, 0.0}
+                                          : expected_reactions(s, kPressure).at(name);
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(std::stod(f[c]), expected[c], 1e-9) << "t = " << t << ", " << name << ", " << c;
     ++rows;
   }
-  EXPECT_EQ(rows, 12);
+  EXPECT_EQ(rows, 14);
 
   // The same forces in the summary's outputs.
   const auto& last = summary["outputs"].back()["reactions"];
   const auto expected = expected_reactions(kStretch, kPressure);
-  ASSERT_EQ(last.size(), 6u);
+  ASSERT_EQ(last.size(), 7u);
   for (const auto& [name, force] : expected)
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(last[name][c].get<double>(), force[c], 1e-9) << name << ", " << c;
   EXPECT_GT(expected.at("top")[2], 0.0);  // the top support pulls the stretched column up
+  fs::remove_all(out);
+}
+
+// A column under its own weight b (N/mm³), clamped at the bottom and held in z on the side
+// x0 as well: the bottom edge on x0 is held in z by both. The total support force must balance
+// the weight, −∫ b dV = −b w d h (global equilibrium of the free body), counting that edge once.
+TEST(Reactions, TotalCountsRowsSharedByTwoBoundariesOnce) {
+  constexpr double kWeight = -0.02;  // N/mm³, in z
+  std::ostringstream s;
+  s << "format_version = 1\n"
+    << "[mesh]\nsource = \"column\"\n"
+    << "[mesh.column]\nwidth = " << kWidth << "\ndepth = " << kDepth << "\nheight = " << kHeight
+    << "\nnx = 2\nny = 2\nnz = 3\n"
+    << "[material]\nmu = " << kMu << "\nlambda = " << kLambda << "\npermeability = 1e-3\n"
+    << "[body_force]\nz = " << kWeight << "\n";
+  for (const char* c : {"x", "y", "z"})
+    s << "[[boundary]]\nname = \"bottom\"\ntype = \"displacement\"\ncomponent = \"" << c
+      << "\"\nvalue = 0\n";
+  s << "[[boundary]]\nname = \"x0\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = 0\n"
+    << "[[boundary]]\nname = \"top\"\ntype = \"pressure\"\nvalue = 0\n"
+    << "[time]\nt_end = 1.0\ndt = 1.0\n"
+    << "[time.newton]\nrtol_displacement = 1e-13\natol_displacement = 1e-15\n"
+    << "[linear_solver]\ntype = \"klu\"\nordering = \"amd\"\n"
+    << "[output]\nline_start = [0, 0, 0]\nline_end = [0, 0, " << kHeight << "]\nfields = false\n"
+    << "reactions = [\"bottom\", \"x0\"]\n";
+  const fs::path out =
+      fs::temp_directory_path() / ("biphasic_reactions_total_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  RunOptions options;
+  options.output_dir = out.string();
+  options.quiet = true;
+  const nlohmann::json summary = run_case(parse_case(s.str(), "weight.toml"), options);
+  ASSERT_EQ(summary["status"], "completed");
+  const auto& r = summary["outputs"].back()["reactions"];
+  const double weight = kWeight * kWidth * kDepth * kHeight;  // N
+  const double bottom = r["bottom"][2].get<double>(), side = r["x0"][2].get<double>();
+  const double total = r["total"][2].get<double>();
+  EXPECT_NEAR(total, -weight, 1e-9 * std::abs(weight));
+  // Both boundaries carry part of the load, so adding them counts the shared edge twice.
+  EXPECT_GT(std::abs(side), 1e-3 * std::abs(weight));
+  EXPECT_GT(std::abs(bottom + side - total), 1e-3 * std::abs(weight));
   fs::remove_all(out);
 }
 
@@ -113,7 +156,7 @@ TEST(Reactions, OnlyBoundariesWithDisplacementConditions) {
   const std::vector<double> y(problem.size(), 0.0);
   EXPECT_THROW(problem.reactions({"nowhere"}, 0.0, y.data(), y.data()), std::invalid_argument);
   const auto r = problem.reactions({"top", "x1"}, 0.0, y.data(), y.data());
-  ASSERT_EQ(r.size(), 2u);
+  ASSERT_EQ(r.size(), 3u);  // top, x1 and their total
   // At rest with p = 0 in y (the Dirichlet values not applied) every force vanishes.
   for (const auto& f : r)
     for (double c : f) EXPECT_EQ(c, 0.0);

@@ -46,10 +46,10 @@ LineProbe interpolating_probe(const Mesh& mesh, const PointLocator& locator, con
 /// and the point for points outside the body (beyond 1e-6 of the mesh's bounding-box diagonal).
 std::vector<Probe> build_probes(const Config& config, const Mesh& mesh);
 
-/// `biphasic check`: builds the mesh (writing no .msh file) and the probes on it, so that a
-/// probe point outside the body is reported before a run. Returns a line per probe saying how
-/// it is sampled; throws CaseError.
-std::vector<std::string> check_probes(const Config& config);
+/// `biphasic check`: builds the probes on the case's mesh, so that a probe point outside the
+/// body is reported before a run. Returns a line per probe saying how it is sampled; throws
+/// CaseError.
+std::vector<std::string> check_probes(const Config& config, const Mesh& mesh);
 
 /// Writes every probe's CSV at each output and takes the oscillation measures on the probe
 /// line.

@@ -200,6 +200,15 @@ struct OutputConfig {
   std::vector<ProbeConfig> probes;  ///< [[probe]] entries
 };
 
+/// Opt-ins for what the checks before the first step refuse (docs/constraints.md).
+struct ConstraintsConfig {
+  /// Run although the displacement conditions leave rigid-body modes free: the applied loads
+  /// must then balance exactly, and the linear solvers see a singular matrix.
+  bool allow_free_rigid_modes = false;
+  /// Accept distinct nodes at the same place (a deliberate crack or contact-free interface).
+  bool allow_coincident_nodes = false;
+};
+
 /// Case-file names of enumerators ("displacement", "metis", …).
 std::string to_string(BcType type);
 std::string to_string(Ordering ordering);
@@ -218,6 +227,7 @@ struct Config {
   TimeConfig time;
   LinearSolverConfig linear_solver;
   OutputConfig output;
+  ConstraintsConfig constraints;
 };
 
 }  // namespace biphasic

@@ -30,6 +30,15 @@ struct Boundary {
   std::vector<Tri6> faces;
 };
 
+/// A named set of mesh nodes from a gmsh physical point (dimension 0) or physical curve
+/// (dimension 1): every node on it, edge nodes of the curve's segments included. Displacement
+/// conditions may act on it (to pin a point or hold a line).
+struct NodeSet {
+  std::string name;
+  int dimension = 0;  ///< 0: physical point, 1: physical curve
+  std::vector<Index> nodes;
+};
+
 /// P2 tetrahedral mesh. Invariant: the first `num_vertices` entries of `nodes` are element
 /// corners (they carry the P1 pressure); the rest are edge nodes. Every tetrahedron has a
 /// positive volume in the local order above.
@@ -38,12 +47,22 @@ struct Mesh {
   Index num_vertices = 0;    ///< corner nodes come first
   std::vector<Tet10> tets;
   std::vector<Boundary> boundaries;
+  /// Physical points and curves of a .msh file (generated meshes have none; the mesh cache
+  /// does not store them).
+  std::vector<NodeSet> node_sets;
+  /// Per node, its tag in the .msh file it was read from (−1 for an edge node made here);
+  /// empty for generated meshes. Messages name nodes by this tag when there is one.
+  std::vector<Index> file_tags;
 
   Index num_nodes() const { return static_cast<Index>(nodes.size()); }
   /// The boundary with this name, or nullptr.
   const Boundary* find_boundary(const std::string& name) const;
   /// Names of all boundaries, in stored order.
   std::vector<std::string> boundary_names() const;
+  /// The node set with this name, or nullptr.
+  const NodeSet* find_node_set(const std::string& name) const;
+  /// "node 12 (file tag 40) at (1, 2, 3) mm": how messages name node n.
+  std::string describe_node(Index n) const;
 };
 
 /// Signed volume [mm³] of the straight tetrahedron (a, b, c, d): positive when

@@ -99,9 +99,11 @@ Mesh generate_sphere_octant(const SphereOctantSpec& spec);
 /// are the physical surfaces (triangles) by name; a physical surface without a name is named
 /// by its tag in decimal ("3"). A linear mesh gets straight-edge midpoints, a 10-node mesh
 /// keeps its edge nodes. Inverted tets are re-oriented (see orient_tets), boundary faces point
-/// outward (see orient_boundary_faces), nodes used by no tet are dropped.
-/// Throws std::runtime_error naming the file on failure (missing or unreadable file, no
-/// tetrahedra, mixed element orders, boundary nodes that are not tet nodes, degenerate tets).
+/// outward (see orient_boundary_faces), nodes used by no element at all are dropped. Physical
+/// points and curves become node sets (Mesh::node_sets, see NodeSet); each node keeps its file
+/// tag (Mesh::file_tags). Throws std::runtime_error naming the file on failure (missing or
+/// unreadable file, no tetrahedra, mixed element orders, boundary, point or curve nodes that
+/// are not tet nodes, curve segments that are not tet edges, degenerate tets).
 Mesh read_gmsh(const std::string& path);
 
 /// Builds P2 edge nodes (straight midpoints) for linear tetrahedra and linear boundary

@@ -88,14 +88,22 @@ class BiphasicProblem {
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;
 
-  /// Reaction forces [N] at (t, y, ẏ): for each named boundary, the force its displacement and
-  /// symmetry conditions exert on the body, i.e. the sum over the boundary's nodes of the
-  /// momentum residual (internal force minus applied loads) on the displacement rows that those
-  /// conditions fix, component by component. A row fixed by conditions on two boundaries (an
-  /// edge node) counts for both. Throws std::invalid_argument for a name with no displacement
-  /// or symmetry condition.
+  /// Reaction forces [N] at (t, y, ẏ): for each named boundary (or physical point or curve),
+  /// the force its displacement and symmetry conditions exert on the body, i.e. the sum over
+  /// its nodes of the momentum residual (internal force minus applied loads) on the
+  /// displacement rows that those conditions fix, component by component. A row fixed by
+  /// conditions on two boundaries (an edge node) counts in the reaction of each. With two or
+  /// more names, one more entry follows: the total over the union of their rows, each row
+  /// once (not the sum of the entries before it, which counts shared rows twice); labelled as
+  /// by reaction_labels(). Throws std::invalid_argument for a name with no displacement or
+  /// symmetry condition.
   std::vector<std::array<double, 3>> reactions(const std::vector<std::string>& boundaries, double t,
                                                const double* y, const double* ydot);
+  /// Label of the total in reactions().
+  static constexpr const char* kReactionTotal = "total";
+  /// The labels of reactions()' entries: the names, then kReactionTotal if there are two or
+  /// more.
+  static std::vector<std::string> reaction_labels(const std::vector<std::string>& boundaries);
 
   /// Fluid volume rates at (t, y, ẏ) [mm³/s] (docs/formulation.md, *Fluid-volume balance*).
   struct FluidRates {
