@@ -7,24 +7,32 @@
 
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/output_folder.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  biphasic run CASE.toml [-o DIR] [--set KEY=VALUE ...] [--quiet]
+  biphasic run CASE.toml [-o DIR] [--overwrite] [--set KEY=VALUE ...] [--quiet]
   biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) only
   biphasic schema            print the case-file reference (Markdown)
   biphasic --help | --version
 
 run: solves the finite-strain biphasic problem described by CASE.toml and writes, as the run
-goes, into DIR (default: results/<case name>):
+goes, into DIR (default: results/<case name>, or results/<case name>--<key=value,...> with
+--set overrides, characters other than letters, digits and . _ , = + - replaced by _):
   line.csv       t, s, x, y, z, ux, uy, uz, p on the probe line at every output time
   fields.h5      displacement (P2 nodes) and pressure per output time; open fields.xdmf in ParaView
-  summary.json   resolved configuration, mesh size, per-step records, counters, timings
+  reactions.csv  t, boundary, Fx, Fy, Fz of the boundaries in output.reactions
+  summary.json   resolved configuration, overrides, mesh size, per-step records, counters,
+                 timings, and the final status: completed, failed (with the error) or invalid
+DIR is locked while the run writes (a second run into it stops with the first one's pid). A DIR
+holding an earlier run (a summary.json) is refused unless --overwrite, which deletes that run's
+files first.
 --set overrides any case-file key, e.g. --set material.permeability=1e-2
   --set stabilisation.type=gls --set boundary[0].value=-0.16
-Exit status: 0 success, 1 bad input (all problems listed), 2 failed solve.
+Exit status: 0 success, 1 bad input (all problems listed) or unusable output folder,
+2 failed solve or failed write.
 )";
 
 /// `run`, or `check` (validate == true): reads and validates the case, then runs it or stops.
@@ -44,6 +52,8 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
       overrides.push_back(value("--set"));
     } else if (a.rfind("--set=", 0) == 0) {
       overrides.push_back(a.substr(6));
+    } else if (a == "--overwrite") {
+      options.overwrite = true;
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -62,7 +72,8 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
     return 0;
   }
   options.output_dir =
-      out_dir.empty() ? ("results/" + std::filesystem::path(case_path).stem().string()) : out_dir;
+      out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
+  options.overrides = overrides;
   biphasic::run_case(config, options);
   return 0;
 }
@@ -90,6 +101,9 @@ int main(int argc, char** argv) {
   } catch (const biphasic::CaseError& e) {
     std::cerr << "error: the case has " << e.problems().size() << " problem(s):\n";
     for (const auto& p : e.problems()) std::cerr << "  " << p << "\n";
+    return 1;
+  } catch (const biphasic::OutputFolderError& e) {
+    std::cerr << "error: " << e.what() << "\n";
     return 1;
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: " << e.what() << "\n" << kUsage;

@@ -18,9 +18,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
+#include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/reaction_csv.hpp"
 #include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
@@ -41,15 +44,9 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Writes JSON to a temporary file and renames it, so a reader never sees half a file.
+/// Replaces the file by the JSON text, checked; a reader never sees half a file.
 void write_json_atomically(const fs::path& path, const nlohmann::json& j) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << j.dump(2) << '\n';
-  }
-  fs::rename(tmp, path);
+  write_file_atomically(path.string(), j.dump(2) + '\n');
 }
 
 nlohmann::json measures_json(const LineMeasures& m) {
@@ -60,34 +57,15 @@ nlohmann::json measures_json(const LineMeasures& m) {
   return j;
 }
 
-/// reactions.csv: `t,boundary,Fx,Fy,Fz` (s, N), one row per boundary and output time, flushed
-/// after every output.
-class ReactionCsv {
- public:
-  explicit ReactionCsv(const fs::path& path) : out_(path) {
-    if (!out_) throw std::runtime_error("cannot write " + path.string());
-    out_.precision(17);
-    out_ << "t,boundary,Fx,Fy,Fz\n";
-    out_.flush();
-  }
-  void write(double t, const std::vector<std::string>& names,
-             const std::vector<std::array<double, 3>>& forces) {
-    for (std::size_t b = 0; b < names.size(); ++b)
-      out_ << t << ',' << names[b] << ',' << forces[b][0] << ',' << forces[b][1] << ','
-           << forces[b][2] << '\n';
-    out_.flush();
-  }
-
- private:
-  std::ofstream out_;
-};
-
 }  // namespace
 
 Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_cache) {
+  // The case-file check confines write_msh to the output folder (relative, no '..').
   auto in_output_dir = [&](std::string path) {
-    if (!path.empty() && fs::path(path).is_relative())
+    if (!path.empty() && fs::path(path).is_relative()) {
       path = (fs::path(output_dir) / path).string();
+      fs::create_directories(fs::path(path).parent_path());
+    }
     return path;
   };
   // Generated meshes: from the cache unless a .msh file of the generated mesh is asked for.
@@ -129,23 +107,17 @@ std::string dependency_versions() {
   return s.str();
 }
 
-nlohmann::json run_case(const Config& config, const RunOptions& options) {
-  const auto wall0 = Clock::now();
-  const fs::path out_dir(options.output_dir);
-  fs::create_directories(out_dir);
+namespace {
+
+/// Everything of run_case after the output folder is ready: mesh, problem, integrator, outputs.
+/// Fills `summary` and writes it at outputs and at the end; the caller records failures.
+void solve_into(const Config& config, const RunOptions& options, const fs::path& out_dir,
+                nlohmann::json& summary, Clock::time_point wall0) {
   std::ostream& log = std::cout;
   auto say = [&](const std::string& line) {
     if (!options.quiet) log << line << std::endl;
   };
-
-  nlohmann::json summary;
-  summary["status"] = "running";
-  summary["case_file"] = config.case_file;
-  summary["version"] = BIPHASIC_VERSION;
-  summary["dependencies"] = dependency_versions();
-  summary["configuration"] = config_to_json(config);
   const fs::path summary_path = out_dir / "summary.json";
-  write_json_atomically(summary_path, summary);
 
   say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
       (config.title.empty() ? config.case_file : config.title));
@@ -217,7 +189,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
   std::unique_ptr<ReactionCsv> reaction_csv;
   if (!config.output.reactions.empty())
-    reaction_csv = std::make_unique<ReactionCsv>(out_dir / "reactions.csv");
+    reaction_csv = std::make_unique<ReactionCsv>((out_dir / "reactions.csv").string());
   const DrainedEnds drained = drained_ends(probe, problem);
   summary["line"] = {
       {"start", a}, {"end", b}, {"nodes", probe.size()}, {"drained_ends", to_string(drained)}};
@@ -391,11 +363,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
 
   try {
     integrator.run(t_start, y, observer);
-  } catch (const std::exception& e) {
-    summary["status"] = "failed";
-    summary["error"] = e.what();
+  } catch (const std::exception&) {
     record_counters(seconds_since(wall0));
-    write_json_atomically(summary_path, summary);
     throw;
   }
   summary["status"] = "completed";
@@ -409,6 +378,46 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       << c["factorizations"] << " factorisations; wall " << summary["timings"]["wall"].get<double>()
       << " s; output in " << out_dir.string();
     say(s.str());
+  }
+}
+
+}  // namespace
+
+nlohmann::json run_case(const Config& config, const RunOptions& options) {
+  const auto wall0 = Clock::now();
+  const OutputFolder folder(options.output_dir,
+                            options.overwrite ? EarlierRun::Overwrite : EarlierRun::Refuse);
+  const fs::path& out_dir = folder.path();
+
+  nlohmann::json summary;
+  summary["status"] = "running";
+  summary["case_file"] = config.case_file;
+  summary["overrides"] = options.overrides;
+  summary["version"] = BIPHASIC_VERSION;
+  summary["dependencies"] = dependency_versions();
+  summary["configuration"] = config_to_json(config);
+  const fs::path summary_path = out_dir / "summary.json";
+  write_json_atomically(summary_path, summary);
+
+  // From here on every way out leaves a final status in summary.json.
+  auto record_failure = [&](const char* status, const nlohmann::json& error) {
+    summary["status"] = status;
+    summary["error"] = error;
+    try {
+      write_json_atomically(summary_path, summary);
+    } catch (const std::exception& write_error) {
+      throw std::runtime_error(error.dump() +
+                               "; moreover the summary could not record it: " + write_error.what());
+    }
+  };
+  try {
+    solve_into(config, options, out_dir, summary, wall0);
+  } catch (const CaseError& e) {
+    record_failure("invalid", e.problems());
+    throw;
+  } catch (const std::exception& e) {
+    record_failure("failed", e.what());
+    throw;
   }
   return summary;
 }

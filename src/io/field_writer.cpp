@@ -1,5 +1,7 @@
 #include "biphasic/io/field_writer.hpp"
 
+#include "biphasic/io/atomic_file.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -137,13 +139,34 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
+/// The system's reason for the innermost failure on HDF5's error stack (e.g. "No space left on
+/// device" from a failed write), or "" if it records none.
+std::string hdf5_cause() {
+  std::string cause;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
+        auto& found = *static_cast<std::string*>(data);
+        const std::string desc = error->desc ? error->desc : "";
+        const std::string tag = "error message = '";
+        const auto start = desc.find(tag);
+        if (found.empty() && start != std::string::npos) {
+          const auto from = start + tag.size();
+          found = desc.substr(from, desc.find('\'', from) - from);
+        }
+        return 0;
+      },
+      &cause);
+  return cause.empty() ? cause : ": " + cause;
+}
+
 /// Helper bound to one open file that turns HDF5 failures into exceptions naming the file.
 class H5File {
  public:
   H5File(hid_t file, const std::string& path) : file_(file), path_(path) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("FieldWriter: " + path_ + ": " + what);
+    throw std::runtime_error("FieldWriter: " + path_ + ": " + what + hdf5_cause());
   }
 
   void create_group(const std::string& name) const {
@@ -232,8 +255,10 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
                              ec.message());
   }
 
+  // Failures are reported by the exceptions below, with the system's cause.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_);
+  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_ + hdf5_cause());
 
   try {
     const H5File h5(file_, h5_path_);
@@ -376,19 +401,7 @@ void FieldWriter::write_xdmf() const {
     << "  </Domain>\n"
     << "</Xdmf>\n";
 
-  const std::string tmp = xdmf_path_ + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << x.str();
-    out.flush();
-    if (!out) throw std::runtime_error("FieldWriter: cannot write " + tmp);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, xdmf_path_, ec);
-  if (ec) {
-    throw std::runtime_error("FieldWriter: cannot rename " + tmp + " to " + xdmf_path_ + ": " +
-                             ec.message());
-  }
+  write_file_atomically(xdmf_path_, x.str());
 }
 
 }  // namespace biphasic

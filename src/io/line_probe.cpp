@@ -1,5 +1,7 @@
 #include "biphasic/io/line_probe.hpp"
 
+#include "biphasic/io/atomic_file.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -144,8 +146,7 @@ LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
   out_.open(path, std::ios::out | std::ios::trunc);
   if (!out_) throw std::runtime_error("LineCsvWriter: cannot open " + path);
   out_ << "t,s,x,y,z,ux,uy,uz,p\n";
-  out_.flush();
-  if (!out_) throw std::runtime_error("LineCsvWriter: cannot write the header of " + path);
+  flush_checked(out_, path);
 }
 
 void LineCsvWriter::write(double t, const LineProbe& probe, const std::vector<double>& u,
@@ -164,8 +165,7 @@ void LineCsvWriter::write(double t, const LineProbe& probe, const std::vector<do
     rows += '\n';
   }
   out_ << rows;
-  out_.flush();
-  if (!out_) throw std::runtime_error("LineCsvWriter: cannot write to " + path_);
+  flush_checked(out_, path_);
 }
 
 }  // namespace biphasic
