@@ -306,6 +306,68 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
   }
 }
 
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         double keep_until)
+    : stem_(stem),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      num_tets_(static_cast<Index>(mesh.tets.size())) {
+  namespace fs = std::filesystem;
+  const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
+  h5_path_ = (dir / (stem + ".h5")).string();
+  xdmf_path_ = (dir / (stem + ".xdmf")).string();
+  edges_ = edge_node_vertices(mesh);
+  if (!fs::is_regular_file(h5_path_))
+    throw std::runtime_error("FieldWriter: " + h5_path_ + " not found (nothing to continue)");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  file_ = H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot open " + h5_path_ + hdf5_cause());
+  try {
+    const H5File h5(file_, h5_path_);
+    {
+      H5Id coords(H5Dopen2(file_, "/mesh/coordinates", H5P_DEFAULT), H5Dclose);
+      H5Id space(coords.valid() ? H5Dget_space(coords.get()) : -1, H5Sclose);
+      hsize_t dims[2] = {0, 0};
+      if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) != 2 ||
+          dims[0] != static_cast<hsize_t>(num_nodes_)) {
+        h5.fail("holds another mesh (expected " + std::to_string(num_nodes_) + " nodes)");
+      }
+    }
+    H5Id set(H5Dopen2(file_, kTimes, H5P_DEFAULT), H5Dclose);
+    H5Id space(set.valid() ? H5Dget_space(set.get()) : -1, H5Sclose);
+    hsize_t count = 0;
+    if (!space.valid() || H5Sget_simple_extent_dims(space.get(), &count, nullptr) != 1)
+      h5.fail("cannot read " + std::string(kTimes));
+    std::vector<double> times(count);
+    if (count > 0 &&
+        H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()) < 0)
+      h5.fail("cannot read " + std::string(kTimes));
+    std::size_t keep = 0;
+    while (keep < times.size() && times[keep] <= keep_until) ++keep;
+    // Outputs after the checkpoint, and any a crash left half-written, go.
+    for (std::size_t i = keep;; ++i) {
+      bool any = false;
+      for (const char* group : {"displacement", "pressure", "pressure_vertices"}) {
+        const std::string name = "/fields/" + std::string(group) + "/" + std::to_string(i);
+        if (H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0) {
+          any = true;
+          if (H5Ldelete(file_, name.c_str(), H5P_DEFAULT) < 0) h5.fail("cannot delete " + name);
+        }
+      }
+      if (!any && i >= times.size()) break;
+    }
+    const hsize_t new_size = keep;
+    if (H5Dset_extent(set.get(), &new_size) < 0) h5.fail("cannot shorten " + std::string(kTimes));
+    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
+    times_.assign(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(keep));
+    write_xdmf();
+  } catch (...) {
+    H5Fclose(file_);
+    file_ = -1;
+    throw;
+  }
+}
+
 FieldWriter::~FieldWriter() {
   if (file_ >= 0) H5Fclose(file_);
 }

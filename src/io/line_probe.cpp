@@ -133,7 +133,7 @@ double interpolate_on_line(const std::vector<double>& s, const std::vector<doubl
   return (1.0 - w) * f[k] + w * f[k + 1];
 }
 
-LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
+LineCsvWriter::LineCsvWriter(const std::string& path, bool append) : path_(path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) {
     std::error_code ec;
@@ -143,9 +143,9 @@ LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
                                path + ": " + ec.message());
     }
   }
-  out_.open(path, std::ios::out | std::ios::trunc);
+  out_.open(path, std::ios::out | (append ? std::ios::app : std::ios::trunc));
   if (!out_) throw std::runtime_error("LineCsvWriter: cannot open " + path);
-  out_ << "t,s,x,y,z,ux,uy,uz,p\n";
+  if (!append) out_ << "t,s,x,y,z,ux,uy,uz,p\n";
   flush_checked(out_, path);
 }
 

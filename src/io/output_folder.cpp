@@ -59,9 +59,10 @@ std::string default_output_folder(const std::string& case_path,
 }
 
 const std::vector<std::string>& OutputFolder::run_files() {
-  static const std::vector<std::string> files{"summary.json",     "line.csv",       "reactions.csv",
-                                              "fields.h5",        "fields.xdmf",    "steps.csv",
-                                              "summary.json.tmp", "fields.xdmf.tmp"};
+  static const std::vector<std::string> files{
+      "summary.json",    "line.csv",          "reactions.csv",  "fields.h5",
+      "fields.xdmf",     "steps.csv",         "checkpoint.bin", "summary.json.tmp",
+      "fields.xdmf.tmp", "checkpoint.bin.tmp"};
   return files;
 }
 

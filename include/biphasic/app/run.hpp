@@ -12,8 +12,9 @@ namespace biphasic {
 
 struct RunOptions {
   std::string output_dir = "results";
-  bool quiet = false;                  ///< no per-step lines on the terminal
-  bool overwrite = false;              ///< replace an earlier run in output_dir (--overwrite)
+  bool quiet = false;      ///< no per-step lines on the terminal
+  bool overwrite = false;  ///< replace an earlier run in output_dir (--overwrite)
+  bool restart = false;    ///< continue the run in output_dir from its checkpoint (--restart)
   std::vector<std::string> overrides;  ///< the --set key=value texts, recorded in summary.json
 };
 
@@ -37,6 +38,11 @@ Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_
 /// a final status: "completed"; "invalid" with the problems when input found faulty after the
 /// folder was made (e.g. a boundary name the mesh lacks; the CaseError propagates); "failed"
 /// with the error otherwise (the exception propagates).
+///
+/// A checkpoint.bin is written at every output time. With options.restart the run continues
+/// from the checkpoint in output_dir up to the configuration's time.t_end, appending to the
+/// earlier run's files; a missing, damaged or foreign checkpoint throws CheckpointError before
+/// anything is written.
 nlohmann::json run_case(const Config& config, const RunOptions& options);
 
 /// Library versions linked into the build (SUNDIALS, SuiteSparse, gmsh, HDF5, Eigen, …).
