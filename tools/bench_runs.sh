@@ -24,7 +24,7 @@ for entry in $plan; do
     mesh=${mesh//,/ }
     for m in $mesh; do
       dir="$out/${solver}_mesh$m${tag:+_$tag}"
-      /usr/bin/time -f "%M" -o "$dir.rss" "$bin" run "$root/cases/paper/mesh${m}_k1e-3_gls.toml" -o "$dir" \
+      /usr/bin/time -f "%M" -o "$dir.rss" "$bin" run "$root/cases/paper/mesh${m}_k1e-3_gls.toml" -o "$dir" --overwrite \
         --set linear_solver.type="$solver" "${extra[@]}" --quiet
       /usr/bin/python3 - "$dir" "$solver" "$m" "$(cat "$dir.rss")" "$variant" >> "$csv" <<'PY'
 import json, sys

@@ -6,6 +6,6 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh"
 out="$root/results/reference"
-"$root/build/biphasic" run "$root/cases/paper/mesh1_k1e-3_gls.toml" -o "$out" "$@"
+"$root/build/biphasic" run "$root/cases/paper/mesh1_k1e-3_gls.toml" -o "$out" --overwrite "$@"
 /usr/bin/python3 "$root/tools/plot_line.py" "$out" -o "$out/pressure_profiles.png" || true
 echo "results: $out (line.csv, fields.xdmf for ParaView, summary.json, pressure_profiles.png)"

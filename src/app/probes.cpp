@@ -9,6 +9,7 @@
 #include "biphasic/app/run.hpp"
 #include "biphasic/fe/shape_functions.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/checkpoint.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 
 namespace biphasic {
@@ -135,11 +136,12 @@ std::vector<std::string> check_probes(const Config& config, const Mesh& mesh) {
 }
 
 ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, const BiphasicProblem& problem,
-                             const std::string& output_dir)
+                             const std::string& output_dir, std::optional<double> resume_t)
     : probes_(std::move(probes)) {
   for (const Probe& probe : probes_) {
-    writers_.push_back(
-        std::make_unique<LineCsvWriter>((std::filesystem::path(output_dir) / probe.file).string()));
+    const std::string path = (std::filesystem::path(output_dir) / probe.file).string();
+    if (resume_t) keep_csv_rows_until(path, *resume_t);
+    writers_.push_back(std::make_unique<LineCsvWriter>(path, resume_t.has_value()));
     if (probe.measured) drained_ = drained_ends(probe.samples, problem);
   }
 }

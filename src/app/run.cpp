@@ -16,13 +16,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
+#include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
+#include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/reaction_csv.hpp"
 #include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
@@ -43,15 +48,62 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Writes JSON to a temporary file and renames it, so a reader never sees half a file.
+/// Replaces the file by the JSON text, checked; a reader never sees half a file.
 void write_json_atomically(const fs::path& path, const nlohmann::json& j) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << j.dump(2) << '\n';
+  write_file_atomically(path.string(), j.dump(2) + '\n');
+}
+
+constexpr const char* kCheckpointName = "checkpoint.bin";
+
+std::string number_text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// Fingerprint of what a checkpoint's state depends on: the resolved configuration except
+/// time.t_end (a restart may go further), the title and the case file's name, and the mesh.
+std::uint64_t case_fingerprint(const Config& config, const Mesh& mesh) {
+  nlohmann::json physical = config_to_json(config);
+  physical.erase("case_file");
+  physical.erase("title");
+  if (physical.contains("time")) physical["time"].erase("t_end");
+  std::uint64_t h = fnv1a64(physical.dump());
+  auto bytes = [](const auto& v) {
+    return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v.front()));
+  };
+  h = fnv1a64(bytes(mesh.nodes), h);
+  return fnv1a64(bytes(mesh.tets), h);
+}
+
+/// Checks that a checkpoint belongs to this case and mesh and lies before time.t_end.
+void accept_checkpoint(const Checkpoint& c, const std::string& path, std::uint64_t case_hash,
+                       std::size_t unknowns, const TimeConfig& time) {
+  if (c.case_hash != case_hash) {
+    throw CheckpointError("checkpoint " + path +
+                          " belongs to another case or mesh: a restart needs the case file, "
+                          "--set overrides and mesh of the earlier run (only time.t_end may "
+                          "change)");
   }
-  fs::rename(tmp, path);
+  if (c.y.size() != unknowns) {
+    throw CheckpointError("checkpoint " + path + " holds " + std::to_string(c.y.size()) +
+                          " unknowns, the case has " + std::to_string(unknowns));
+  }
+  if (c.t > time.t_end + 1e-9 * time.dt) {
+    throw CheckpointError("checkpoint " + path + " is at t = " + number_text(c.t) +
+                          " s, after time.t_end = " + number_text(time.t_end) + " s");
+  }
+}
+
+/// The summary.json of the run being continued; throws CheckpointError if there is none.
+nlohmann::json read_earlier_summary(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw CheckpointError("nothing to restart: no " + path.string());
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw CheckpointError("cannot restart: " + path.string() + " is damaged (" + e.what() + ")");
+  }
 }
 
 nlohmann::json measures_json(const LineMeasures& m) {
@@ -62,34 +114,15 @@ nlohmann::json measures_json(const LineMeasures& m) {
   return j;
 }
 
-/// reactions.csv: `t,boundary,Fx,Fy,Fz` (s, N), one row per boundary and output time, flushed
-/// after every output.
-class ReactionCsv {
- public:
-  explicit ReactionCsv(const fs::path& path) : out_(path) {
-    if (!out_) throw std::runtime_error("cannot write " + path.string());
-    out_.precision(17);
-    out_ << "t,boundary,Fx,Fy,Fz\n";
-    out_.flush();
-  }
-  void write(double t, const std::vector<std::string>& names,
-             const std::vector<std::array<double, 3>>& forces) {
-    for (std::size_t b = 0; b < names.size(); ++b)
-      out_ << t << ',' << names[b] << ',' << forces[b][0] << ',' << forces[b][1] << ','
-           << forces[b][2] << '\n';
-    out_.flush();
-  }
-
- private:
-  std::ofstream out_;
-};
-
 }  // namespace
 
 Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_cache) {
+  // The case-file check confines write_msh to the output folder (relative, no '..').
   auto in_output_dir = [&](std::string path) {
-    if (!path.empty() && fs::path(path).is_relative())
+    if (!path.empty() && fs::path(path).is_relative()) {
       path = (fs::path(output_dir) / path).string();
+      fs::create_directories(fs::path(path).parent_path());
+    }
     return path;
   };
   // Generated meshes: from the cache unless a .msh file of the generated mesh is asked for.
@@ -131,23 +164,17 @@ std::string dependency_versions() {
   return s.str();
 }
 
-nlohmann::json run_case(const Config& config, const RunOptions& options) {
-  const auto wall0 = Clock::now();
-  const fs::path out_dir(options.output_dir);
-  fs::create_directories(out_dir);
+namespace {
+
+/// Everything of run_case after the output folder is ready: mesh, problem, integrator, outputs.
+/// Fills `summary` and writes it at outputs and at the end; the caller records failures.
+void solve_into(const Config& config, const RunOptions& options, const fs::path& out_dir,
+                nlohmann::json& summary, Clock::time_point wall0, const Checkpoint* resume) {
   std::ostream& log = std::cout;
   auto say = [&](const std::string& line) {
     if (!options.quiet) log << line << std::endl;
   };
-
-  nlohmann::json summary;
-  summary["status"] = "running";
-  summary["case_file"] = config.case_file;
-  summary["version"] = BIPHASIC_VERSION;
-  summary["dependencies"] = dependency_versions();
-  summary["configuration"] = config_to_json(config);
   const fs::path summary_path = out_dir / "summary.json";
-  write_json_atomically(summary_path, summary);
 
   say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
       (config.title.empty() ? config.case_file : config.title));
@@ -165,6 +192,14 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   TimeIntegrator& integrator = *integrator_ptr;
   integrator.set_log(say);
   const double setup_seconds = seconds_since(t0);
+  const fs::path checkpoint_path = out_dir / kCheckpointName;
+  const std::uint64_t case_hash = case_fingerprint(config, mesh);
+  if (resume) {
+    accept_checkpoint(*resume, checkpoint_path.string(), case_hash, problem.size(), config.time);
+    say("restart from " + checkpoint_path.string() + ": output step " +
+        std::to_string(resume->step) + " at t = " + number_text(resume->t) + " s");
+    write_json_atomically(summary_path, summary);
+  }
   summary["mesh"] = {{"nodes", mesh.num_nodes()},
                      {"vertices", mesh.num_vertices},
                      {"tetrahedra", mesh.tets.size()},
@@ -208,17 +243,27 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   summary["advisor"] = to_json(advice);
   for (const std::string& line : advice_lines(advice)) say(line);
 
-  // Observers: probes, fields, per-step records.
-  ProbeRecorder probe_csv(std::move(probes), problem, out_dir.string());
+  // Observers: probes, fields, per-step records. A restart first drops what the earlier run
+  // wrote after its checkpoint, then appends.
+  const bool append = resume != nullptr;
+  ProbeRecorder probe_csv(std::move(probes), problem, out_dir.string(),
+                          append ? std::optional<double>(resume->t) : std::nullopt);
   std::unique_ptr<FieldWriter> fields;
-  if (config.output.fields)
-    fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  if (config.output.fields) {
+    fields = append ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, resume->t)
+                    : std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  }
   std::unique_ptr<ReactionCsv> reaction_csv;
-  if (!config.output.reactions.empty())
-    reaction_csv = std::make_unique<ReactionCsv>(out_dir / "reactions.csv");
+  if (!config.output.reactions.empty()) {
+    const std::string path = (out_dir / "reactions.csv").string();
+    if (append) keep_csv_rows_until(path, resume->t);
+    reaction_csv = std::make_unique<ReactionCsv>(path, append);
+  }
   probe_csv.describe(summary);
-  summary["steps"] = nlohmann::json::array();
-  summary["outputs"] = nlohmann::json::array();
+  const nlohmann::json carried =
+      resume ? nlohmann::json::parse(resume->record) : nlohmann::json::object();
+  summary["steps"] = carried.value("steps", nlohmann::json::array());
+  summary["outputs"] = carried.value("outputs", nlohmann::json::array());
 
   // Fluid-volume balance (backward Euler only: BDF's observer sees the outputs, not its steps).
   std::unique_ptr<VolumeBalance> balance;
@@ -318,23 +363,53 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   };
 
   std::vector<double> y(problem.size(), 0.0);
-  const double t_start = 0.0;
-  problem.apply_dirichlet(t_start, y.data(), nullptr);
+  problem.apply_dirichlet(0.0, y.data(), nullptr);
   if (auto* be = dynamic_cast<BackwardEuler*>(&integrator)) {
-    balance = std::make_unique<VolumeBalance>(problem, y);
+    balance = std::make_unique<VolumeBalance>(problem, y);  // ΔV from the state at t = 0
+    if (resume && carried.contains("volume_balance")) {
+      const nlohmann::json& vb = carried["volume_balance"];
+      balance->resume({vb.at("volume_change").get<double>(),
+                       vb.at("outflow_integrated").get<double>(),
+                       vb.at("source_integrated").get<double>()});
+    }
     // Step by step, so that sub-steps after a cut-back each count with their own Δt.
     be->set_sub_step_hook(
         [&balance](double t, double dt, const std::vector<double>& ys,
                    const std::vector<double>& ydots) { balance->add_step(t, dt, ys, ydots); });
   }
-  write_output(t_start, y, std::vector<double>(y.size(), 0.0));
+  // The checkpoint: state, rate, time, output step, and what the summary carries on.
+  auto write_restart_point = [&](int step, double t, double last_dt, const std::vector<double>& ys,
+                                 const std::vector<double>& ydots) {
+    nlohmann::json record{{"steps", summary["steps"]}, {"outputs", summary["outputs"]}};
+    if (balance) {
+      const VolumeBalanceRecord& vb = balance->record();
+      record["volume_balance"] = {{"volume_change", vb.volume_change},
+                                  {"outflow_integrated", vb.outflow_integrated},
+                                  {"source_integrated", vb.source_integrated}};
+    }
+    write_checkpoint(checkpoint_path.string(),
+                     Checkpoint{case_hash, step, t, last_dt, ys, ydots, record.dump()});
+  };
+  double t_start = 0.0;
+  int step_offset = 0;  // output steps done before this run (a restart)
+  if (resume) {
+    y = resume->y;
+    t_start = resume->t;
+    step_offset = static_cast<int>(resume->step);
+  } else {
+    const std::vector<double> ydot0(y.size(), 0.0);
+    write_output(t_start, y, ydot0);
+    write_restart_point(0, t_start, 0.0, y, ydot0);
+  }
   const int every = std::max(1, config.output.every);
   const int planned = integrator.planned_outputs();
 
   constexpr double kSummaryInterval = 1.0;  // s of wall time between summary refreshes
   auto last_summary = Clock::now();
-  auto observer = [&](const StepInfo& info, const std::vector<double>& ys,
+  auto observer = [&](const StepInfo& segment_info, const std::vector<double>& ys,
                       const std::vector<double>& ydots) {
+    StepInfo info = segment_info;
+    info.step += step_offset;
     nlohmann::json rec{{"step", info.step},
                        {"t", info.t},
                        {"dt", info.dt},
@@ -357,6 +432,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       }
     }
     summary["steps"].push_back(rec);
+    if (output_now) write_restart_point(info.step, info.t, info.dt, ys, ydots);
     // Rewriting the whole summary after every step costs time quadratic in the steps (12 s of a
     // 16 s run of 2000 steps); refresh it at outputs, at most once per second, and at the end.
     if (output_now && seconds_since(last_summary) >= kSummaryInterval) {
@@ -385,12 +461,10 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   };
 
   try {
-    integrator.run(t_start, y, observer);
-  } catch (const std::exception& e) {
-    summary["status"] = "failed";
-    summary["error"] = e.what();
+    // A restart from a checkpoint at t_end has nothing left to do.
+    if (t_start < config.time.t_end - 1e-9 * config.time.dt) integrator.run(t_start, y, observer);
+  } catch (const std::exception&) {
     record_counters(seconds_since(wall0));
-    write_json_atomically(summary_path, summary);
     throw;
   }
   summary["status"] = "completed";
@@ -404,6 +478,60 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
       << c["factorizations"] << " factorisations; wall " << summary["timings"]["wall"].get<double>()
       << " s; output in " << out_dir.string();
     say(s.str());
+  }
+}
+
+}  // namespace
+
+nlohmann::json run_case(const Config& config, const RunOptions& options) {
+  const auto wall0 = Clock::now();
+  if (options.restart && !fs::is_directory(options.output_dir))
+    throw CheckpointError("nothing to restart: no folder " + options.output_dir);
+  const OutputFolder folder(options.output_dir, options.restart     ? EarlierRun::Continue
+                                                : options.overwrite ? EarlierRun::Overwrite
+                                                                    : EarlierRun::Refuse);
+  const fs::path& out_dir = folder.path();
+  const fs::path summary_path = out_dir / "summary.json";
+
+  // A restart reads its checkpoint and the earlier summary before anything is written.
+  std::optional<Checkpoint> resume;
+  nlohmann::json summary;
+  if (options.restart) {
+    resume = read_checkpoint((out_dir / kCheckpointName).string());
+    summary = read_earlier_summary(summary_path);
+    summary["restarts"].push_back(
+        {{"t", resume->t}, {"step", resume->step}, {"overrides", options.overrides}});
+  }
+  summary["status"] = "running";
+  summary["case_file"] = config.case_file;
+  summary["overrides"] = options.overrides;
+  summary["version"] = BIPHASIC_VERSION;
+  summary["dependencies"] = dependency_versions();
+  summary["configuration"] = config_to_json(config);
+  summary.erase("error");
+  if (!resume) write_json_atomically(summary_path, summary);
+
+  // From here on every way out leaves a final status in summary.json.
+  auto record_failure = [&](const char* status, const nlohmann::json& error) {
+    summary["status"] = status;
+    summary["error"] = error;
+    try {
+      write_json_atomically(summary_path, summary);
+    } catch (const std::exception& write_error) {
+      throw std::runtime_error(error.dump() +
+                               "; moreover the summary could not record it: " + write_error.what());
+    }
+  };
+  try {
+    solve_into(config, options, out_dir, summary, wall0, resume ? &*resume : nullptr);
+  } catch (const CheckpointError&) {
+    throw;  // refused before anything was written
+  } catch (const CaseError& e) {
+    record_failure("invalid", e.problems());
+    throw;
+  } catch (const std::exception& e) {
+    record_failure("failed", e.what());
+    throw;
   }
   return summary;
 }

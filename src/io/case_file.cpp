@@ -857,6 +857,23 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
                        "must differ from output.line_start");
   }
 
+  // mesh.write_msh is written inside the output folder and nowhere else.
+  if (const std::string& msh = config.mesh.cylinder.write_msh;
+      !problems.is_bad("mesh.write_msh") && !msh.empty()) {
+    const std::filesystem::path path(msh);
+    const bool leaves = std::any_of(path.begin(), path.end(),
+                                    [](const std::filesystem::path& part) { return part == ".."; });
+    if (path.has_root_path()) {
+      problems.bad_value("mesh.write_msh", quote(msh),
+                         "must be a path relative to the output folder, not an absolute one");
+    } else if (leaves) {
+      problems.bad_value("mesh.write_msh", quote(msh),
+                         "must stay inside the output folder (no '..' component)");
+    } else if (path.extension() != ".msh" || path.stem().empty()) {
+      problems.bad_value("mesh.write_msh", quote(msh), "must name a .msh file");
+    }
+  }
+
   if (!problems.is_bad("mesh.file") && !config.mesh.file.empty()) {
     const std::string given = config.mesh.file;
     config.mesh.file = resolve_against(given, base_dir);

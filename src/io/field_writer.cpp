@@ -1,5 +1,7 @@
 #include "biphasic/io/field_writer.hpp"
 
+#include "biphasic/io/atomic_file.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -137,13 +139,34 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
+/// The system's reason for the innermost failure on HDF5's error stack (e.g. "No space left on
+/// device" from a failed write), or "" if it records none.
+std::string hdf5_cause() {
+  std::string cause;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
+        auto& found = *static_cast<std::string*>(data);
+        const std::string desc = error->desc ? error->desc : "";
+        const std::string tag = "error message = '";
+        const auto start = desc.find(tag);
+        if (found.empty() && start != std::string::npos) {
+          const auto from = start + tag.size();
+          found = desc.substr(from, desc.find('\'', from) - from);
+        }
+        return 0;
+      },
+      &cause);
+  return cause.empty() ? cause : ": " + cause;
+}
+
 /// Helper bound to one open file that turns HDF5 failures into exceptions naming the file.
 class H5File {
  public:
   H5File(hid_t file, const std::string& path) : file_(file), path_(path) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("FieldWriter: " + path_ + ": " + what);
+    throw std::runtime_error("FieldWriter: " + path_ + ": " + what + hdf5_cause());
   }
 
   void create_group(const std::string& name) const {
@@ -232,8 +255,10 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
                              ec.message());
   }
 
+  // Failures are reported by the exceptions below, with the system's cause.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_);
+  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_ + hdf5_cause());
 
   try {
     const H5File h5(file_, h5_path_);
@@ -274,6 +299,68 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
     h5.write_attribute(times.get(), kTimes, "units", "s");
 
     if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
+  } catch (...) {
+    H5Fclose(file_);
+    file_ = -1;
+    throw;
+  }
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         double keep_until)
+    : stem_(stem),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      num_tets_(static_cast<Index>(mesh.tets.size())) {
+  namespace fs = std::filesystem;
+  const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
+  h5_path_ = (dir / (stem + ".h5")).string();
+  xdmf_path_ = (dir / (stem + ".xdmf")).string();
+  edges_ = edge_node_vertices(mesh);
+  if (!fs::is_regular_file(h5_path_))
+    throw std::runtime_error("FieldWriter: " + h5_path_ + " not found (nothing to continue)");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  file_ = H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("FieldWriter: cannot open " + h5_path_ + hdf5_cause());
+  try {
+    const H5File h5(file_, h5_path_);
+    {
+      H5Id coords(H5Dopen2(file_, "/mesh/coordinates", H5P_DEFAULT), H5Dclose);
+      H5Id space(coords.valid() ? H5Dget_space(coords.get()) : -1, H5Sclose);
+      hsize_t dims[2] = {0, 0};
+      if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) != 2 ||
+          dims[0] != static_cast<hsize_t>(num_nodes_)) {
+        h5.fail("holds another mesh (expected " + std::to_string(num_nodes_) + " nodes)");
+      }
+    }
+    H5Id set(H5Dopen2(file_, kTimes, H5P_DEFAULT), H5Dclose);
+    H5Id space(set.valid() ? H5Dget_space(set.get()) : -1, H5Sclose);
+    hsize_t count = 0;
+    if (!space.valid() || H5Sget_simple_extent_dims(space.get(), &count, nullptr) != 1)
+      h5.fail("cannot read " + std::string(kTimes));
+    std::vector<double> times(count);
+    if (count > 0 &&
+        H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()) < 0)
+      h5.fail("cannot read " + std::string(kTimes));
+    std::size_t keep = 0;
+    while (keep < times.size() && times[keep] <= keep_until) ++keep;
+    // Outputs after the checkpoint, and any a crash left half-written, go.
+    for (std::size_t i = keep;; ++i) {
+      bool any = false;
+      for (const char* group : {"displacement", "pressure", "pressure_vertices"}) {
+        const std::string name = "/fields/" + std::string(group) + "/" + std::to_string(i);
+        if (H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0) {
+          any = true;
+          if (H5Ldelete(file_, name.c_str(), H5P_DEFAULT) < 0) h5.fail("cannot delete " + name);
+        }
+      }
+      if (!any && i >= times.size()) break;
+    }
+    const hsize_t new_size = keep;
+    if (H5Dset_extent(set.get(), &new_size) < 0) h5.fail("cannot shorten " + std::string(kTimes));
+    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
+    times_.assign(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(keep));
+    write_xdmf();
   } catch (...) {
     H5Fclose(file_);
     file_ = -1;
@@ -376,19 +463,7 @@ void FieldWriter::write_xdmf() const {
     << "  </Domain>\n"
     << "</Xdmf>\n";
 
-  const std::string tmp = xdmf_path_ + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << x.str();
-    out.flush();
-    if (!out) throw std::runtime_error("FieldWriter: cannot write " + tmp);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, xdmf_path_, ec);
-  if (ec) {
-    throw std::runtime_error("FieldWriter: cannot rename " + tmp + " to " + xdmf_path_ + ": " +
-                             ec.message());
-  }
+  write_file_atomically(xdmf_path_, x.str());
 }
 
 }  // namespace biphasic

@@ -1,5 +1,7 @@
 #include "biphasic/io/line_probe.hpp"
 
+#include "biphasic/io/atomic_file.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -231,7 +233,7 @@ double interpolate_on_line(const std::vector<double>& s, const std::vector<doubl
   return (1.0 - w) * f[k] + w * f[k + 1];
 }
 
-LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
+LineCsvWriter::LineCsvWriter(const std::string& path, bool append) : path_(path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) {
     std::error_code ec;
@@ -241,11 +243,10 @@ LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
                                path + ": " + ec.message());
     }
   }
-  out_.open(path, std::ios::out | std::ios::trunc);
+  out_.open(path, std::ios::out | (append ? std::ios::app : std::ios::trunc));
   if (!out_) throw std::runtime_error("LineCsvWriter: cannot open " + path);
-  out_ << "t,s,x,y,z,ux,uy,uz,p\n";
-  out_.flush();
-  if (!out_) throw std::runtime_error("LineCsvWriter: cannot write the header of " + path);
+  if (!append) out_ << "t,s,x,y,z,ux,uy,uz,p\n";
+  flush_checked(out_, path);
 }
 
 void LineCsvWriter::write(double t, const LineProbe& probe, const std::vector<double>& u,
@@ -264,8 +265,7 @@ void LineCsvWriter::write(double t, const LineProbe& probe, const std::vector<do
     rows += '\n';
   }
   out_ << rows;
-  out_.flush();
-  if (!out_) throw std::runtime_error("LineCsvWriter: cannot write to " + path_);
+  flush_checked(out_, path_);
 }
 
 }  // namespace biphasic

@@ -56,9 +56,10 @@ std::vector<std::string> check_probes(const Config& config, const Mesh& mesh);
 class ProbeRecorder {
  public:
   /// Opens (truncates) each probe's CSV in `output_dir`; the drained ends of the probe line
-  /// come from the pressure conditions of `problem`.
+  /// come from the pressure conditions of `problem`. With `resume_t` (a restart), keeps each
+  /// file's rows up to that time [s] and appends after them.
   ProbeRecorder(std::vector<Probe> probes, const BiphasicProblem& problem,
-                const std::string& output_dir);
+                const std::string& output_dir, std::optional<double> resume_t = std::nullopt);
   ~ProbeRecorder();
 
   /// The summary's "line" block (start, end, sampling, samples, drained ends; or that there is

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/mesh/mesh.hpp"
@@ -11,7 +12,10 @@ namespace biphasic {
 
 struct RunOptions {
   std::string output_dir = "results";
-  bool quiet = false;  ///< no per-step lines on the terminal
+  bool quiet = false;      ///< no per-step lines on the terminal
+  bool overwrite = false;  ///< replace an earlier run in output_dir (--overwrite)
+  bool restart = false;    ///< continue the run in output_dir from its checkpoint (--restart)
+  std::vector<std::string> overrides;  ///< the --set key=value texts, recorded in summary.json
 };
 
 /// The mesh the configuration describes (generated or read); a relative mesh.write_msh is
@@ -27,8 +31,18 @@ Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_
 ///   reactions.csv t, boundary, Fx, Fy, Fz of each boundary in output.reactions [s, N]
 ///   summary.json  resolved configuration, mesh size, per-step records, outputs (line
 ///                 measures, reactions), counters, timings
-/// Returns the summary. On a failed step the summary records the failure (status "failed")
-/// and the StepFailure propagates.
+/// The folder is locked for the run and must not hold an earlier run unless options.overwrite
+/// (see OutputFolder); its problems throw OutputFolderError before any work. Every write is
+/// checked: a failed one stops the run with std::runtime_error naming file and cause, and the
+/// files written before stay as they were. Returns the summary. summary.json always ends with
+/// a final status: "completed"; "invalid" with the problems when input found faulty after the
+/// folder was made (e.g. a boundary name the mesh lacks; the CaseError propagates); "failed"
+/// with the error otherwise (the exception propagates).
+///
+/// A checkpoint.bin is written at every output time. With options.restart the run continues
+/// from the checkpoint in output_dir up to the configuration's time.t_end, appending to the
+/// earlier run's files; a missing, damaged or foreign checkpoint throws CheckpointError before
+/// anything is written.
 nlohmann::json run_case(const Config& config, const RunOptions& options);
 
 /// Library versions linked into the build (SUNDIALS, SuiteSparse, gmsh, HDF5, Eigen, …).

@@ -43,6 +43,11 @@ class FieldWriter {
  public:
   /// Creates `directory` if needed and writes the mesh. Throws std::runtime_error on failure.
   FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh);
+  /// Continues the files an earlier run of the same mesh left in `directory` (a restart):
+  /// outputs at times after `keep_until` [s] are deleted, later writes append. Throws
+  /// std::runtime_error if the file is missing, unreadable or of another mesh.
+  FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+              double keep_until);
   ~FieldWriter();
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;

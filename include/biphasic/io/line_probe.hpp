@@ -87,8 +87,9 @@ double interpolate_on_line(const std::vector<double>& s, const std::vector<doubl
 /// file is flushed after every write so that it survives a crash.
 class LineCsvWriter {
  public:
-  /// Creates (or truncates) the file, creating its folder if needed, and writes the header.
-  explicit LineCsvWriter(const std::string& path);
+  /// Creates (or truncates) the file, creating its folder if needed, and writes the header;
+  /// with `append`, keeps the rows already in the file (a restarted run) and writes no header.
+  explicit LineCsvWriter(const std::string& path, bool append = false);
 
   void write(double t, const LineProbe& probe, const std::vector<double>& u,
              const std::vector<double>& p_vertices);

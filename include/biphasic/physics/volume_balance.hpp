@@ -29,6 +29,8 @@ class VolumeBalance {
   /// ẏ = (y − yₙ)/Δt. Call before the problem's volume-rate setting changes for the next
   /// step: Q is the problem's own mass residual at (t, y, ẏ).
   void add_step(double t, double dt, const std::vector<double>& y, const std::vector<double>& ydot);
+  /// Continues a balance recorded earlier (a restarted run): the next steps add to `record`.
+  void resume(const VolumeBalanceRecord& record) { record_ = record; }
   /// The balance after the last step added.
   const VolumeBalanceRecord& record() const { return record_; }
 
