@@ -261,7 +261,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
 
   start(t0, y);
   // From t0: a restarted run (t0 > 0) has fewer outputs left than planned_outputs().
-  const int outputs = interval_count(t_end - t0, m.time.dt);
+  const int outputs = checked_interval_count(t_end - t0, m.time.dt);
   auto output_time = [&](int k) { return k == outputs ? t_end : t0 + k * m.time.dt; };
   // Totals so far: accumulated segments plus the current one (IDAReInit resets its counters).
   auto totals = [&] {
