@@ -7,6 +7,7 @@
 
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/size_guard.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace {
@@ -57,8 +58,10 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   }
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
+  biphasic::check_size(config, case_path, biphasic::available_memory());
   if (validate_only) {
-    std::cout << case_path << ": valid\n";
+    std::cout << case_path << ": valid; mesh size estimate: "
+              << biphasic::describe(biphasic::estimate_size(config)) << "\n";
     return 0;
   }
   options.output_dir =
