@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project builds and runs with, when any is missing.
-# Run as root (or with sudo available). Safe to run repeatedly.
+# Run as root (or with sudo available). Safe to run repeatedly. Extra package names given as
+# arguments are installed too (the CI fuzz stage adds clang and libclang-rt-14-dev).
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -8,6 +9,7 @@ packages=(
   libgmsh-dev libhdf5-dev libtomlplusplus-dev nlohmann-json3-dev
   libumfpack5 libmumps-seq-dev libopenblas0-pthread libhypre-dev libopenmpi-dev
   libgtest-dev python3 python3-numpy python3-matplotlib time
+  "$@"
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -11,6 +11,7 @@
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/size_guard.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace {
@@ -78,10 +79,12 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   }
   if (case_path.empty()) throw std::invalid_argument("run needs a case file");
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
+  biphasic::check_size(config, case_path, biphasic::available_memory());
   if (validate_only) {
     // Builds the mesh: names, formulas, constraints and probe points are checked on it.
     const std::vector<std::string> notes = biphasic::check_case(config);
-    std::cout << case_path << ": valid\n";
+    std::cout << case_path << ": valid; mesh size estimate: "
+              << biphasic::describe(biphasic::estimate_size(config)) << "\n";
     for (const std::string& note : notes) std::cout << note << "\n";
     return 0;
   }

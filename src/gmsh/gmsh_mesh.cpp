@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -417,20 +418,103 @@ Mesh extract_current_model() {
   return mesh;
 }
 
-// Element types present in an ASCII .msh file of format 2.x or 4.1, read from its $Elements
-// section without gmsh; nullopt for other formats, binary files or anything unexpected.
-// gmsh keeps one element type per entity and misreads (or overruns memory on) an entity that
-// mixes orders, so such files must be rejected before gmsh loads them.
+// Nodes per element of a gmsh element type (gmsh must be initialized); 0 if gmsh does not know
+// the type.
+int gmsh_nodes_per_element(int type) {
+  std::string name;
+  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
+  std::vector<double> local;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+  } catch (...) {
+    return 0;
+  }
+  return num_nodes;
+}
+
+template <class T>
+bool read_raw(std::istream& in, T& value) {
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(T)));
+}
+
+// Element types in the $Elements section of a binary .msh file (2.2 or 4.1, little-endian
+// data as gmsh writes it on this machine, 8-byte size_t), skipping each block's data by its
+// node count; nullopt for anything unexpected (truncated, counts beyond the file's size).
+std::optional<std::set<int>> scan_binary_element_types(std::istream& in, bool v2,
+                                                       std::uintmax_t file_size) {
+  std::string line;
+  std::getline(in, line);  // rest of the format line
+  int one = 0;
+  if (!read_raw(in, one) || one != 1) return std::nullopt;
+  while (std::getline(in, line) && line.rfind("$Elements", 0) != 0) {
+  }
+  if (!in) return std::nullopt;
+  const auto left = [&]() -> std::uintmax_t {
+    const auto at = in.tellg();
+    return at < 0 || static_cast<std::uintmax_t>(at) > file_size
+               ? 0
+               : file_size - static_cast<std::uintmax_t>(at);
+  };
+  std::set<int> types;
+  if (v2) {  // ASCII count line, then blocks: type, count, tags (ints), elements of ints
+    std::uint64_t count = 0;
+    if (!(in >> count)) return std::nullopt;
+    std::getline(in, line);
+    for (std::uint64_t seen = 0; seen < count;) {
+      std::array<int, 3> header{};
+      if (!read_raw(in, header)) return std::nullopt;
+      const auto [type, in_block, tags] = header;
+      const int nodes = gmsh_nodes_per_element(type);
+      if (in_block <= 0 || tags < 0 || nodes <= 0) return std::nullopt;
+      const std::uintmax_t bytes_each = (1u + static_cast<std::uintmax_t>(tags) + nodes) * 4u;
+      if (static_cast<std::uintmax_t>(in_block) > left() / bytes_each) return std::nullopt;
+      types.insert(type);
+      in.seekg(static_cast<std::streamoff>(bytes_each * static_cast<std::uintmax_t>(in_block)),
+               std::ios::cur);
+      seen += static_cast<std::uint64_t>(in_block);
+    }
+  } else {  // blocks, count, min tag, max tag (size_t); per block dim, entity, type (int),
+            // count (size_t), then count × (tag + nodes) size_t
+    std::array<std::uint64_t, 4> header{};
+    if (!read_raw(in, header)) return std::nullopt;
+    for (std::uint64_t b = 0; b < header[0]; ++b) {
+      std::array<int, 3> block{};
+      std::uint64_t in_block = 0;
+      if (!read_raw(in, block) || !read_raw(in, in_block)) return std::nullopt;
+      const int nodes = gmsh_nodes_per_element(block[2]);
+      if (nodes <= 0) return std::nullopt;
+      const std::uintmax_t bytes_each = (1u + static_cast<std::uintmax_t>(nodes)) * 8u;
+      if (in_block > left() / bytes_each) return std::nullopt;
+      types.insert(block[2]);
+      in.seekg(static_cast<std::streamoff>(bytes_each * in_block), std::ios::cur);
+    }
+  }
+  return types;
+}
+
+// Element types present in a .msh file of format 2.x or 4.1 (ASCII or binary), read from its
+// $Elements section without loading the file into gmsh; nullopt for other formats or
+// anything unexpected. gmsh keeps one element type per entity and misreads (or overruns
+// memory on) an entity that mixes orders, so such files must be rejected before gmsh loads
+// them. Needs an initialized gmsh for the node counts of binary element blocks.
 std::optional<std::set<int>> scan_element_types(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
   std::string line;
   while (std::getline(in, line) && line.rfind("$MeshFormat", 0) != 0) {
   }
   std::string version;
-  int file_type = -1;
-  if (!(in >> version >> file_type) || file_type != 0) return std::nullopt;
+  int file_type = -1, data_size = 0;
+  if (!(in >> version >> file_type >> data_size)) return std::nullopt;
   const bool v2 = version.rfind("2", 0) == 0;
   if (!v2 && version != "4.1") return std::nullopt;
+  if (file_type == 1) {
+    if (data_size != sizeof(std::uint64_t)) return std::nullopt;
+    return scan_binary_element_types(in, v2, file_size);
+  }
+  if (file_type != 0) return std::nullopt;
   while (std::getline(in, line) && line.rfind("$Elements", 0) != 0) {
   }
   if (!in) return std::nullopt;
@@ -661,8 +745,8 @@ Mesh gmsh_read(const std::string& path) {
       throw std::runtime_error("not a regular file");
     }
     if (!std::ifstream(path)) throw std::runtime_error("file cannot be opened for reading");
-    if (const auto types = scan_element_types(path)) check_single_order(*types);
     GmshSession session;
+    if (const auto types = scan_element_types(path)) check_single_order(*types);
     gmsh::merge(path);
     return extract_current_model();
   });

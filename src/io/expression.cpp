@@ -1,4 +1,4 @@
-// Parsing (recursive descent), simplification, symbolic differentiation and postfix
+// Parsing (recursive descent), simplification, symbolic differentiation and register
 // evaluation of case-file formulas.
 #include "biphasic/io/expression.hpp"
 
@@ -133,13 +133,39 @@ class ExpressionBuilder {
     return push(n);
   }
 
-  /// Appends ∂(subtree at i)/∂v; `memo` caches the derivative of every node already done.
-  int derivative(int i, Variable v, std::vector<int>& memo) {
-    if (memo[i] >= 0) return memo[i];
+  /// Appends ∂(subtree at root)/∂v and returns its node. Iterative: children have smaller
+  /// indices than their parents, so one pass in index order over the nodes reachable from
+  /// the root finds every child's derivative done (no recursion, linear in the tree size).
+  int derivative(int root, Variable v) {
+    const std::vector<char> used = reachable(nodes_, root);
+    std::vector<int> done(static_cast<std::size_t>(root) + 1, -1);
+    for (int i = 0; i <= root; ++i)
+      if (used[static_cast<std::size_t>(i)]) done[static_cast<std::size_t>(i)] = step(i, v, done);
+    return done[static_cast<std::size_t>(root)];
+  }
+
+  /// The nodes reachable from `root` (a mask over nodes[0..root]).
+  static std::vector<char> reachable(const std::vector<Node>& nodes, int root) {
+    std::vector<char> used(static_cast<std::size_t>(root) + 1, 0);
+    used[static_cast<std::size_t>(root)] = 1;
+    for (int i = root; i >= 0; --i) {
+      if (!used[static_cast<std::size_t>(i)]) continue;
+      const Node& n = nodes[static_cast<std::size_t>(i)];
+      if (n.a >= 0) used[static_cast<std::size_t>(n.a)] = 1;
+      if (n.b >= 0) used[static_cast<std::size_t>(n.b)] = 1;
+    }
+    return used;
+  }
+
+  bool is_number(int i) const { return nodes_[i].op == Op::Number; }
+
+ private:
+  /// ∂(node i)/∂v from the derivatives of its children, already in `done`.
+  int step(int i, Variable v, const std::vector<int>& done) {
     const Node n = nodes_[i];  // copy: push() may reallocate
     int d = 0;
-    auto da = [&] { return derivative(n.a, v, memo); };
-    auto db = [&] { return derivative(n.b, v, memo); };
+    auto da = [&] { return done[static_cast<std::size_t>(n.a)]; };
+    auto db = [&] { return done[static_cast<std::size_t>(n.b)]; };
     switch (n.op) {
       case Op::Number:
         d = number(0.0);
@@ -201,13 +227,9 @@ class ExpressionBuilder {
         d = number(0.0);
         break;
     }
-    memo[i] = d;
     return d;
   }
 
-  bool is_number(int i) const { return nodes_[i].op == Op::Number; }
-
- private:
   int push(const Node& n) {
     nodes_.push_back(n);
     return static_cast<int>(nodes_.size()) - 1;
@@ -415,6 +437,10 @@ Expression Expression::constant(double value) {
 }
 
 Expression Expression::parse(const std::string& text) {
+  if (text.size() > kMaxLength)
+    throw ExpressionError(kMaxLength, "the formula has " + std::to_string(text.size()) +
+                                          " characters, more than the limit of " +
+                                          std::to_string(kMaxLength));
   Expression e;
   e.nodes_.clear();
   const int root = ExpressionParser(text, e.nodes_).parse();
@@ -428,9 +454,7 @@ Expression Expression::parse(const std::string& text) {
 Expression Expression::derivative(Variable v) const {
   Expression d;
   d.nodes_ = nodes_;
-  std::vector<int> memo(nodes_.size(), -1);
-  const int root =
-      ExpressionBuilder(d.nodes_).derivative(static_cast<int>(nodes_.size()) - 1, v, memo);
+  const int root = ExpressionBuilder(d.nodes_).derivative(static_cast<int>(nodes_.size()) - 1, v);
   if (root != static_cast<int>(d.nodes_.size()) - 1) d.nodes_.push_back(d.nodes_[root]);
   d.text_ = std::string("d/d") + kVariableNames[static_cast<std::size_t>(v)] + "(" + text_ + ")";
   d.compile();
@@ -438,71 +462,48 @@ Expression Expression::derivative(Variable v) const {
 }
 
 void Expression::compile() {
+  // One instruction per node reachable from the root, in index order (children before
+  // parents); operands are earlier instructions. A node shared by several parents (as after
+  // differentiation) is computed once. No recursion: any depth compiles.
+  const int root = static_cast<int>(nodes_.size()) - 1;
+  const std::vector<char> used = ExpressionBuilder::reachable(nodes_, root);
+  std::vector<std::int32_t> slot(nodes_.size(), -1);
   program_.clear();
-  std::size_t depth = 0;
-  stack_depth_ = 1;
-  // Post-order walk from the root (the tree is a DAG after differentiation: shared nodes are
-  // emitted once per use).
-  auto emit = [&](auto&& self, int i) -> void {
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (!used[i]) continue;
     const Node& n = nodes_[i];
-    if (n.a >= 0) self(self, n.a);
-    if (n.b >= 0) self(self, n.b);
-    program_.push_back({n.op, n.var, n.value});
-    if (n.op == Op::Number || n.op == Op::Var)
-      ++depth;
-    else if (n.b >= 0)
-      --depth;
-    stack_depth_ = std::max(stack_depth_, depth);
-  };
-  emit(emit, static_cast<int>(nodes_.size()) - 1);
+    slot[i] = static_cast<std::int32_t>(program_.size());
+    program_.push_back({n.op, n.var, n.value, n.a >= 0 ? slot[static_cast<std::size_t>(n.a)] : -1,
+                        n.b >= 0 ? slot[static_cast<std::size_t>(n.b)] : -1});
+  }
 }
 
 double Expression::operator()(double x, double y, double z, double t) const {
   if (program_.size() == 1 && program_[0].op == Op::Number) return program_[0].value;
-  constexpr std::size_t kLocal = 32;
+  constexpr std::size_t kLocal = 64;
   std::array<double, kLocal> local{};
   std::vector<double> heap;
-  double* s = local.data();
-  if (stack_depth_ > kLocal) {
-    heap.resize(stack_depth_);
-    s = heap.data();
+  double* r = local.data();
+  if (program_.size() > kLocal) {
+    heap.resize(program_.size());
+    r = heap.data();
   }
   const double vars[4] = {x, y, z, t};
-  std::size_t top = 0;
-  for (const Instruction& in : program_) {
+  for (std::size_t k = 0; k < program_.size(); ++k) {
+    const Instruction& in = program_[k];
     switch (in.op) {
       case Op::Number:
-        s[top++] = in.value;
+        r[k] = in.value;
         break;
       case Op::Var:
-        s[top++] = vars[static_cast<std::size_t>(in.var)];
+        r[k] = vars[static_cast<std::size_t>(in.var)];
         break;
-      case Op::Add:
-        --top;
-        s[top - 1] += s[top];
-        break;
-      case Op::Sub:
-        --top;
-        s[top - 1] -= s[top];
-        break;
-      case Op::Mul:
-        --top;
-        s[top - 1] *= s[top];
-        break;
-      case Op::Div:
-        --top;
-        s[top - 1] /= s[top];
-        break;
-      case Op::Pow:
-        --top;
-        s[top - 1] = std::pow(s[top - 1], s[top]);
-        break;
-      default:  // unary
-        s[top - 1] = ExpressionBuilder::apply(in.op, s[top - 1], 0.0);
+      default:
+        r[k] = ExpressionBuilder::apply(in.op, r[in.a], in.b >= 0 ? r[in.b] : 0.0);
         break;
     }
   }
-  return s[0];
+  return r[program_.size() - 1];
 }
 
 bool Expression::depends_on(Variable v) const {
@@ -516,15 +517,30 @@ bool Expression::is_constant() const { return nodes_.back().op == Op::Number; }
 bool Expression::is_zero() const { return is_constant() && nodes_.back().value == 0.0; }
 
 std::string Expression::to_string() const {
-  auto text = [&](auto&& self, int i) -> std::string {
-    const Node& n = nodes_[i];
+  // Post-order with an explicit stack (no recursion, any depth): a node's text is built once
+  // both children's texts are on the `done` stack.
+  std::vector<std::string> done;
+  std::vector<std::pair<int, bool>> todo{{static_cast<int>(nodes_.size()) - 1, false}};
+  while (!todo.empty()) {
+    const auto [i, children_done] = todo.back();
+    todo.pop_back();
+    const Node& n = nodes_[static_cast<std::size_t>(i)];
+    if (!children_done && n.a >= 0) {
+      todo.push_back({i, true});
+      if (n.b >= 0) todo.push_back({n.b, false});
+      todo.push_back({n.a, false});
+      continue;
+    }
     switch (n.op) {
       case Op::Number:
-        return number_text(n.value);
+        done.push_back(number_text(n.value));
+        break;
       case Op::Var:
-        return kVariableNames[static_cast<std::size_t>(n.var)];
+        done.push_back(kVariableNames[static_cast<std::size_t>(n.var)]);
+        break;
       case Op::Neg:
-        return "(-" + self(self, n.a) + ")";
+        done.back() = "(-" + done.back() + ")";
+        break;
       case Op::Add:
       case Op::Sub:
       case Op::Mul:
@@ -532,17 +548,20 @@ std::string Expression::to_string() const {
       case Op::Pow: {
         static const char symbols[] = {'+', '-', '*', '/', '^'};
         const char symbol = symbols[static_cast<int>(n.op) - static_cast<int>(Op::Add)];
-        return "(" + self(self, n.a) + " " + symbol + " " + self(self, n.b) + ")";
+        std::string right = std::move(done.back());
+        done.pop_back();
+        done.back() = "(" + done.back() + " " + symbol + " " + right + ")";
+        break;
       }
       default: {
         static const char* const names[] = {"sin", "cos",  "tan", "exp",
                                             "log", "sqrt", "abs", "sign"};
-        return std::string(names[static_cast<int>(n.op) - static_cast<int>(Op::Sin)]) + "(" +
-               self(self, n.a) + ")";
+        done.back() = std::string(names[static_cast<int>(n.op) - static_cast<int>(Op::Sin)]) + "(" +
+                      done.back() + ")";
       }
     }
-  };
-  return text(text, static_cast<int>(nodes_.size()) - 1);
+  }
+  return done.back();
 }
 
 }  // namespace biphasic

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,9 @@ namespace biphasic {
 namespace {
 
 constexpr std::array<const char*, 2> kGradingFaces{"bottom", "top"};
+/// Most cells of a column (6 tets each: 6e8 tets, far beyond any machine's memory; it only
+/// keeps every count and index well inside 64-bit arithmetic).
+constexpr std::int64_t kMaxColumnCells = 100'000'000;
 
 void require_count(const char* what, int value) {
   if (value < 1)
@@ -38,6 +42,14 @@ void validate(const ColumnSpec& spec) {
   require_count("nx", spec.nx);
   require_count("ny", spec.ny);
   require_count("nz", spec.nz);
+  // Counts in 64 bits: nx = 2^31 − 1 overflowed int arithmetic in the lattice numbering.
+  const std::int64_t cells = static_cast<std::int64_t>(spec.nx) * spec.ny * spec.nz;
+  if (spec.nx > kMaxColumnCells || spec.ny > kMaxColumnCells || spec.nz > kMaxColumnCells ||
+      cells > kMaxColumnCells) {
+    throw std::runtime_error("nx * ny * nz = " + std::to_string(spec.nx) + " * " +
+                             std::to_string(spec.ny) + " * " + std::to_string(spec.nz) +
+                             " cells is more than the limit of " + std::to_string(kMaxColumnCells));
+  }
   detail::require_at_least_one("grading_ratio", spec.grading_ratio);
   detail::require_known_faces(spec.grading_faces, kGradingFaces);
   if (spec.grading_ratio > 1.0 && !spec.grading_faces.empty()) {
@@ -61,7 +73,7 @@ double uniform_coordinate(double length, int i, int n) {
 struct Lattice {
   int nx, ny;
   Index operator()(int i, int j, int k) const {
-    return i + static_cast<Index>(nx + 1) * (j + static_cast<Index>(ny + 1) * k);
+    return i + (static_cast<Index>(nx) + 1) * (j + (static_cast<Index>(ny) + 1) * k);
   }
 };
 
@@ -116,7 +128,8 @@ Mesh generate_column(const ColumnSpec& spec) {
     const int nx = spec.nx, ny = spec.ny, nz = spec.nz;
     const Lattice at{nx, ny};
     std::vector<Point> vertices;
-    vertices.reserve(static_cast<std::size_t>(nx + 1) * (ny + 1) * (nz + 1));
+    vertices.reserve((static_cast<std::size_t>(nx) + 1) * (static_cast<std::size_t>(ny) + 1) *
+                     (static_cast<std::size_t>(nz) + 1));
     for (int k = 0; k <= nz; ++k) {
       for (int j = 0; j <= ny; ++j) {
         for (int i = 0; i <= nx; ++i) {

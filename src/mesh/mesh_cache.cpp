@@ -7,15 +7,16 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <optional>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 #include <vector>
 
@@ -31,6 +32,8 @@ constexpr char kMagic[] = "biphasic-mesh\n";
 constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
 constexpr std::uint32_t kFormatVersion = 1;
 constexpr std::uint32_t kByteOrderMark = 0x01020304u;
+/// Largest cache file read back [bytes]; anything larger is treated as a miss (and not stored).
+constexpr std::uintmax_t kMaxCacheFileBytes = std::uintmax_t{2} << 30;
 
 /// FNV-1a, 64 bits.
 std::uint64_t fnv1a(const char* data, std::size_t size) {
@@ -85,6 +88,7 @@ class Reader {
   }
   bool get_bytes(void* out, std::size_t size) {
     if (size > size_ - pos_) return false;
+    if (size == 0) return true;  // `out` may be the null data() of an empty vector
     std::memcpy(out, data_ + pos_, size);
     pos_ += size;
     return true;
@@ -163,11 +167,35 @@ std::optional<Mesh> deserialise(const std::vector<char>& bytes, const std::strin
   return mesh;
 }
 
+/// Why a decoded entry cannot be used as a mesh (an index out of range, inconsistent counts,
+/// a coordinate that is not finite, a degenerate tet, ...), or nullopt if it is a valid Mesh.
+/// A matching checksum only shows the file is what some writer wrote, not that it is sound.
+std::optional<std::string> invalid_entry(const Mesh& mesh) {
+  if (mesh.tets.empty()) return "no tetrahedra";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    for (const double x : mesh.nodes[i])
+      if (!std::isfinite(x)) return "node " + std::to_string(i) + " has a non-finite coordinate";
+  try {
+    check_mesh(mesh);  // every index in range, corners before edge nodes, faces on tets, volumes
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
+
+/// The bytes of `path` if it is a regular file (not a symbolic link, FIFO, device, ...) of at
+/// most kMaxCacheFileBytes; nullopt otherwise. Never blocks on a special file.
 std::optional<std::vector<char>> read_file(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (ec || status.type() != fs::file_type::regular) return std::nullopt;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > kMaxCacheFileBytes) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return std::nullopt;
+  std::vector<char> bytes(static_cast<std::size_t>(size));
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  if (static_cast<std::uintmax_t>(in.gcount()) != size || in.peek() != EOF) return std::nullopt;
   return bytes;
 }
 
@@ -236,10 +264,17 @@ CachedMesh cached_mesh(const fs::path& directory, const std::string& description
   std::snprintf(name, sizeof name, "%016llx.mesh",
                 static_cast<unsigned long long>(fnv1a(description.data(), description.size())));
   const fs::path path = directory / name;
-  if (const auto bytes = read_file(path))
-    if (auto mesh = deserialise(*bytes, description)) return {std::move(*mesh), true};
+  if (const auto bytes = read_file(path)) {
+    if (auto mesh = deserialise(*bytes, description)) {
+      const auto problem = invalid_entry(*mesh);
+      if (!problem) return {std::move(*mesh), true};
+      std::fprintf(stderr, "note: mesh cache entry '%s' is not a valid mesh (%s); regenerating\n",
+                   path.c_str(), problem->c_str());
+    }
+  }
   CachedMesh result{generate(), false};
-  write_atomically(path, serialise(description, result.mesh));
+  const std::vector<char> bytes = serialise(description, result.mesh);
+  if (bytes.size() <= kMaxCacheFileBytes) write_atomically(path, bytes);
   return result;
 }
 

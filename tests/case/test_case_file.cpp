@@ -612,7 +612,7 @@ line_end = [0, 0, 4]
   }
   EXPECT_EQ(j["time"]["newton"].size(), 8u);
   EXPECT_EQ(j["time"]["newton"]["max_cutbacks"], 4);
-  EXPECT_EQ(j["mesh"].size(), 14u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
+  EXPECT_EQ(j["mesh"].size(), 15u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
   EXPECT_EQ(j["mesh"]["column"].size(), 8u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
@@ -750,6 +750,25 @@ grading_faces = ["top", "lateral"]
     EXPECT_TRUE(has_problem(problems, {"mesh.grading_faces", "\"lateral\"",
                                        "mesh boundaries: bottom, top, symmetry_x"}));
   }
+}
+
+}  // namespace
+}  // namespace biphasic
+
+namespace biphasic {
+namespace {
+
+// A 300 000-character formula crashed `check` (stack overflow) and 1e308 as the layer grading
+// ratio aborted inside gmsh: both are now input errors naming the key, before any work.
+TEST(CaseFile, OverlongFormulaAndExtremeLayerGradingAreRefusedNamingTheKey) {
+  std::string sum = "x";
+  while (sum.size() < 300'000) sum += "+x";
+  const auto problems = problems_of(kMinimalCase + "[body_force]\nx = \"" + sum +
+                                    "\"\n[mesh]\nlayers = 4\nlayer_grading_ratio = 1e308\n");
+  EXPECT_TRUE(has_problem(problems, {"cases/x.toml: body_force.x", "300001 characters",
+                                     "more than the limit of 100000"}));
+  EXPECT_TRUE(has_problem(problems, {"mesh.layer_grading_ratio = 1e308", "[1, 1000000]"}));
+  for (const std::string& p : problems) EXPECT_LT(p.size(), 1000u) << p.substr(0, 200);
 }
 
 }  // namespace

@@ -181,5 +181,48 @@ TEST(Expression, ErrorsNameThePositionAndTheProblem) {
       ExpressionError);
 }
 
+// A long flat sum is a left-leaning tree as deep as it is long: compiling, differentiating,
+// evaluating and printing it must not recurse (a 300 000-character "x+x+…" overflowed the
+// stack in compilation, a 1.1 MB formula in its time derivative).
+TEST(Expression, LongFlatFormulasAtTheLengthLimitWorkWithoutRecursion) {
+  const std::size_t terms = (Expression::kMaxLength + 1) / 2;  // "x+x+…+x", at the limit
+  std::string sum = "x";
+  while (sum.size() + 2 <= Expression::kMaxLength) sum += "+x";
+  ASSERT_EQ(sum.size(), 2 * terms - 1);
+  const Expression e = Expression::parse(sum);
+  EXPECT_EQ(e(0.5, 0, 0, 0), 0.5 * static_cast<double>(terms));
+  EXPECT_EQ(e.derivative(Expression::Variable::X)(0, 0, 0, 0), static_cast<double>(terms));
+  EXPECT_TRUE(e.derivative(Expression::Variable::T).is_zero());
+  EXPECT_EQ(e.to_string().size(), sum.size() + 4 * (terms - 1) + 0);  // "(a + b)" per '+'
+
+  // A product of n factors of t: d/dt t^n = n t^(n−1); the derivative must stay linear in
+  // size (every shared subtree computed once), not quadratic.
+  std::string product = "t";
+  while (product.size() + 2 <= 20'001) product += "*t";
+  const double n = static_cast<double>((product.size() + 1) / 2);
+  const Expression p = Expression::parse(product);
+  EXPECT_EQ(p.derivative(Expression::Variable::T)(0, 0, 0, 1.0), n);
+  EXPECT_EQ(p.derivative(Expression::Variable::T).derivative(Expression::Variable::T)(0, 0, 0, 1.0),
+            n * (n - 1));
+}
+
+TEST(Expression, FormulaLongerThanTheLimitIsAnErrorNamingTheLimit) {
+  for (const std::size_t size :
+       {Expression::kMaxLength + 1, std::size_t{300'000}, std::size_t{1'100'000}}) {
+    std::string text = "x";
+    while (text.size() + 2 <= size) text += "+x";
+    if (text.size() < size) text += " ";
+    try {
+      Expression::parse(text);
+      ADD_FAILURE() << "a formula of " << text.size() << " characters was accepted";
+    } catch (const ExpressionError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(std::to_string(text.size()) + " characters"), std::string::npos) << what;
+      EXPECT_NE(what.find("limit of " + std::to_string(Expression::kMaxLength)), std::string::npos)
+          << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace biphasic

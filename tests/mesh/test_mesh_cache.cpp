@@ -1,9 +1,12 @@
 // Mesh cache: a stored mesh comes back bit for bit; anything that does not match (another
 // description, a damaged or truncated file) is regenerated; the key covers every spec field.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -60,6 +63,33 @@ class MeshCache : public ::testing::Test {
     return out;
   }
 
+  /// Rewrites the 8-byte index at byte `offset` of the only cache file to `value`, then
+  /// recomputes the trailing FNV-1a checksum so that the file passes as intact.
+  void rewrite_index_with_valid_checksum(std::size_t offset, std::int64_t value) {
+    ASSERT_EQ(files().size(), 1u);
+    const fs::path path = files()[0];
+    std::vector<char> bytes(fs::file_size(path));
+    std::ifstream(path, std::ios::binary).read(bytes.data(), static_cast<long>(bytes.size()));
+    std::memcpy(bytes.data() + offset, &value, sizeof value);
+    std::uint64_t h = 14695981039346656037ull;
+    for (std::size_t i = 0; i + 8 < bytes.size(); ++i) {
+      h ^= static_cast<unsigned char>(bytes[i]);
+      h *= 1099511628211ull;
+    }
+    std::memcpy(bytes.data() + bytes.size() - 8, &h, sizeof h);
+    std::ofstream(path, std::ios::binary | std::ios::trunc)
+        .write(bytes.data(), static_cast<long>(bytes.size()));
+  }
+  /// Byte offset of the first tetrahedron's first index in the entry of `description`
+  /// (layout documented in mesh_cache.cpp).
+  std::size_t first_tet_offset(const std::string& description) const {
+    return 14 + 4 + 4 + 8 + description.size() + 8 + column_.nodes.size() * 24 + 8 + 8;
+  }
+  std::size_t first_face_offset(const std::string& description) const {
+    const std::string& name = column_.boundaries[0].name;
+    return first_tet_offset(description) + column_.tets.size() * 80 + 8 + 8 + name.size() + 8;
+  }
+
   fs::path dir_;
   Mesh column_;
   int generated_ = 0;
@@ -109,6 +139,92 @@ TEST_F(MeshCache, DamagedOrTruncatedFilesAreRegeneratedAndReplaced) {
   EXPECT_FALSE(fetch("column A").from_cache);
   EXPECT_EQ(generated_, 4);
   EXPECT_TRUE(same_mesh(fetch("column A").mesh, column_));
+}
+
+// A checksum shows the bytes are what was written, not that they form a mesh: an entry whose
+// indices point outside the node array must not reach the assembly (it wrote out of bounds).
+TEST_F(MeshCache, EntryWithValidChecksumButIndexOutOfRangeIsRegenerated) {
+  fetch("column A");
+  rewrite_index_with_valid_checksum(first_tet_offset("column A"), 1'000'000'000);
+  const CachedMesh fresh = fetch("column A");
+  EXPECT_FALSE(fresh.from_cache);
+  EXPECT_EQ(generated_, 2);
+  EXPECT_TRUE(same_mesh(fresh.mesh, column_));
+  EXPECT_TRUE(fetch("column A").from_cache);  // replaced by a sound entry
+
+  rewrite_index_with_valid_checksum(first_tet_offset("column A") + 8 * 9, -3);  // an edge node
+  EXPECT_FALSE(fetch("column A").from_cache);
+  EXPECT_EQ(generated_, 3);
+}
+
+TEST_F(MeshCache, EntryWithBoundaryFaceNodeOutOfRangeIsRegenerated) {
+  fetch("column A");
+  ASSERT_FALSE(column_.boundaries.empty());
+  rewrite_index_with_valid_checksum(first_face_offset("column A"), column_.num_nodes());
+  const CachedMesh fresh = fetch("column A");
+  EXPECT_FALSE(fresh.from_cache);
+  EXPECT_EQ(generated_, 2);
+  EXPECT_TRUE(same_mesh(fresh.mesh, column_));
+}
+
+// Found by fuzz_mesh_cache: an entry holding an empty mesh (no nodes, no tets) passed the
+// checksum, copied zero bytes to a null pointer (undefined behaviour, reported by UBSan) and
+// came back as a "valid" mesh without tetrahedra.
+TEST_F(MeshCache, EntryWithAnEmptyMeshIsRegenerated) {
+  fetch("column A");
+  ASSERT_EQ(files().size(), 1u);
+  const fs::path path = files()[0];
+  const std::string description = "column A";
+  std::vector<char> bytes;
+  const auto put = [&](const auto& value) {
+    const char* p = reinterpret_cast<const char*>(&value);
+    bytes.insert(bytes.end(), p, p + sizeof value);
+  };
+  const std::string magic = "biphasic-mesh\n";
+  bytes.insert(bytes.end(), magic.begin(), magic.end());
+  put(std::uint32_t{1});
+  put(std::uint32_t{0x01020304u});
+  put(std::uint64_t{description.size()});
+  bytes.insert(bytes.end(), description.begin(), description.end());
+  for (int i = 0; i < 4; ++i) put(std::uint64_t{0});  // nodes, num_vertices, tets, boundaries
+  std::uint64_t h = 14695981039346656037ull;
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  put(h);
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), static_cast<long>(bytes.size()));
+  const CachedMesh fresh = fetch("column A");
+  EXPECT_FALSE(fresh.from_cache);
+  EXPECT_EQ(generated_, 2);
+  EXPECT_TRUE(same_mesh(fresh.mesh, column_));
+}
+
+// A FIFO (or a link to /dev/zero) in place of an entry used to block the run or grow memory
+// without bound: only regular files are read, links and special files count as a miss.
+TEST_F(MeshCache, FifoOrSymlinkInPlaceOfAnEntryIsAMissNotAHang) {
+  fetch("column A");
+  ASSERT_EQ(files().size(), 1u);
+  const fs::path path = files()[0];
+  fs::remove(path);
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  EXPECT_FALSE(fetch("column A").from_cache);
+  EXPECT_EQ(generated_, 2);
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(path)));  // replaced by a real entry
+  EXPECT_TRUE(fetch("column A").from_cache);
+
+  fs::remove(path);
+  fs::create_symlink("/dev/zero", path);
+  EXPECT_FALSE(fetch("column A").from_cache);
+  EXPECT_EQ(generated_, 3);
+
+  // Even a link to a sound entry is not followed.
+  const fs::path elsewhere = dir_ / "elsewhere";
+  fs::rename(path, elsewhere);
+  fs::create_symlink(elsewhere, path);
+  EXPECT_FALSE(fetch("column A").from_cache);
+  EXPECT_EQ(generated_, 4);
 }
 
 TEST_F(MeshCache, EmptyDirectoryDisablesTheCache) {

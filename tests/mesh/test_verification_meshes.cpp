@@ -125,6 +125,28 @@ TEST(MeshColumn, DefaultsAreAUnitColumnOfTenLayers) {
   for (int k = 0; k <= 10; ++k) EXPECT_DOUBLE_EQ(z[static_cast<std::size_t>(k)], k / 10.0);
 }
 
+// nx = 2^31 − 1 overflowed int arithmetic (undefined behaviour) before allocating; counts are
+// now 64-bit and a column beyond 10^8 cells is refused with a message before any allocation.
+TEST(MeshColumn, CellCountsBeyondTheLimitAreRefusedWithoutOverflow) {
+  const auto message_for = [](int nx, int ny, int nz) -> std::string {
+    biphasic::ColumnSpec spec;
+    spec.nx = nx;
+    spec.ny = ny;
+    spec.nz = nz;
+    try {
+      biphasic::generate_column(spec);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string huge = message_for(std::numeric_limits<int>::max(), 1, 1);
+  EXPECT_NE(huge.find("nx * ny * nz = 2147483647 * 1 * 1 cells"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("limit of 100000000"), std::string::npos) << huge;
+  const std::string cube = message_for(2000, 2000, 2000);  // 8e9 cells: overflows 32 bits
+  EXPECT_NE(cube.find("limit of 100000000"), std::string::npos) << cube;
+}
+
 TEST(MeshColumn, CountsVolumeAndInvariants) {
   const auto spec = box_spec();
   const Mesh mesh = biphasic::generate_column(spec);

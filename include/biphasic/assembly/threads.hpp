@@ -4,8 +4,19 @@
 
 namespace biphasic {
 
-/// OMP_NUM_THREADS if set, else every processor. (gmsh sets the OpenMP default to its own
-/// General.NumThreads while meshing, so the runtime's default cannot be trusted.)
+/// More threads than this per processor only slow a run down; a larger OMP_NUM_THREADS (say
+/// 1000000, which made the OpenMP runtime fail creating them) is clamped to it.
+inline constexpr int kMaxThreadsPerProcessor = 4;
+
+/// OMP_NUM_THREADS if set, else every processor; at most kMaxThreadsPerProcessor × the
+/// processors (with a note on stderr when clamped). Also makes it the OpenMP default. (gmsh
+/// sets the OpenMP default to its own General.NumThreads while meshing, so the runtime's
+/// default cannot be trusted.)
 int worker_threads();
+
+/// The thread count for an OMP_NUM_THREADS value (nullptr: unset) on `processors`
+/// processors: a positive integer is used up to kMaxThreadsPerProcessor × processors;
+/// anything else (empty, not a number, ≤ 0, out of range) gives `processors`.
+int worker_threads_for(const char* omp_num_threads, int processors);
 
 }  // namespace biphasic

@@ -30,7 +30,8 @@ struct MeshConfig {
   QuarterCylinderSpec cylinder;  ///< also holds write_msh for every gmsh-generated source
   ColumnSpec column;
   SphereOctantSpec sphere_octant;
-  std::string file;  ///< .msh path (resolved relative to the case file's folder)
+  std::string file;                     ///< .msh path (resolved relative to the case file's folder)
+  bool ignore_memory_estimate = false;  ///< run even if the size guard expects too little memory
 };
 
 struct MaterialConfig {

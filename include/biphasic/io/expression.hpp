@@ -10,9 +10,9 @@
 // Names: the variables x, y, z (reference coordinates, mm) and t (time, s), the constant pi.
 // Functions: sin cos tan exp log sqrt abs (log is the natural logarithm). Numbers: 2, 0.5, .5,
 // 1e-3, 2.5E+2. A formula is parsed once into a tree, simplified (constants folded), and
-// compiled to a postfix program; evaluation is a loop over that program with no allocation
-// for ordinary formulas. Outside a function's domain (log of a negative number, 0/0) the
-// value is NaN or ±inf, as in C.
+// compiled to a program of register instructions (each node computed once); evaluation is a
+// loop over that program with no allocation for ordinary formulas (up to 64 nodes). Outside a
+// function's domain (log of a negative number, 0/0) the value is NaN or ±inf, as in C.
 #pragma once
 
 #include <array>
@@ -44,7 +44,12 @@ class Expression {
 
   /// The constant 0 (text "0").
   Expression();
-  /// Parses `text`; throws ExpressionError on a syntax error or an unknown name.
+  /// Longest formula accepted [characters]; parsing, differentiation, compilation and
+  /// evaluation are iterative and linear in the length, this only bounds time and memory.
+  static constexpr std::size_t kMaxLength = 100'000;
+
+  /// Parses `text`; throws ExpressionError on a syntax error, an unknown name, nesting deeper
+  /// than 200 levels of parentheses, unary signs or powers, or more than kMaxLength characters.
   static Expression parse(const std::string& text);
   /// The constant `value`.
   static Expression constant(double value);
@@ -96,11 +101,13 @@ class Expression {
     Variable var = Variable::X;
     std::int32_t a = -1, b = -1;
   };
-  /// One postfix instruction.
+  /// One instruction: its result is register k (its index in program_), operands are the
+  /// registers of earlier instructions (a, b; −1 when unused).
   struct Instruction {
     Op op;
     Variable var;
     double value;
+    std::int32_t a, b;
   };
   friend class ExpressionBuilder;
   friend class ExpressionParser;
@@ -109,7 +116,6 @@ class Expression {
 
   std::vector<Node> nodes_;  ///< the tree; the root is the last node
   std::vector<Instruction> program_;
-  std::size_t stack_depth_ = 1;
   std::string text_;
 };
 

@@ -35,7 +35,11 @@ struct CachedMesh {
 /// `generate()`d and stored (written to a temporary file and renamed, so that concurrent runs
 /// never see a partial file). An empty `directory` disables the cache. A file that does not
 /// match (other description, truncated, checksum wrong, older format) is regenerated and
-/// replaced; failing to store is not an error (the mesh is returned all the same).
+/// replaced; so is an entry that decodes but is no valid mesh (an index out of range, counts
+/// that disagree, a non-finite coordinate: check_mesh), with a note on stderr. Only regular
+/// files of at most 2 GiB are read: a symbolic link, FIFO or device in place of an entry is a
+/// miss (never followed, never blocks). Failing to store is not an error (the mesh is
+/// returned all the same).
 CachedMesh cached_mesh(const std::filesystem::path& directory, const std::string& description,
                        const std::function<Mesh()>& generate);
 

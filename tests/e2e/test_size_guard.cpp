@@ -1,0 +1,114 @@
+// The size guard and input bounds through the command line: cases whose mesh cannot fit in
+// memory (lc = 1e-4 meshed for minutes and grew without bound; a 200³ column and 10⁵ layers
+// ran into std::bad_alloc) are refused with exit 1 before any meshing, naming the keys and
+// the estimate; `check` reports the estimate of a valid case; a huge OMP_NUM_THREADS is
+// clamped instead of crashing the OpenMP runtime.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status;
+  std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& args, const std::string& env = "") {
+  const std::string cmd =
+      (env.empty() ? "" : "env " + env + " ") + std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
+  Result r{-1, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+class SizeGuard : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("biphasic_size_guard_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    case_ = (dir_ / "case.toml").string();
+    std::ofstream(case_) << "format_version = 1\n[[boundary]]\nname = "
+                            "\"bottom\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = 0.0\n";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// `command` on the case with --set `overrides`, timed.
+  Result timed(const std::string& command, const std::string& overrides, double& seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    Result r =
+        run(command + " " + case_ + " -o " + (dir_ / "out").string() + " --quiet " + overrides);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
+
+  fs::path dir_;
+  std::string case_;
+};
+
+TEST_F(SizeGuard, MeshesTooLargeForTheMachineAreRefusedBeforeMeshing) {
+  struct Case {
+    std::string overrides, keys;
+  };
+  const Case cases[] = {
+      {"--set mesh.lc=1e-4", "mesh.radius, mesh.height, mesh.lc"},
+      {"--set mesh.source=column --set mesh.column.nx=200 --set mesh.column.ny=200 "
+       "--set mesh.column.nz=200",
+       "mesh.column.nx, mesh.column.ny, mesh.column.nz"},
+      {"--set mesh.layers=100000 --set mesh.lc=0.5", "mesh.radius, mesh.lc, mesh.layers"},
+  };
+  for (const Case& c : cases) {
+    for (const char* command : {"run", "check"}) {
+      double seconds = 0.0;
+      const Result r = timed(command, c.overrides, seconds);
+      EXPECT_EQ(r.status, 1) << command << " " << c.overrides << "\n" << r.output;
+      EXPECT_NE(r.output.find(case_ + ": " + c.keys + ": the mesh would have about"),
+                std::string::npos)
+          << r.output;
+      EXPECT_NE(r.output.find("GB available"), std::string::npos) << r.output;
+      EXPECT_NE(r.output.find("mesh.ignore_memory_estimate"), std::string::npos) << r.output;
+      EXPECT_LT(seconds, 10.0) << command << " " << c.overrides;  // refused, not meshed
+      EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
+    }
+  }
+}
+
+TEST_F(SizeGuard, CheckReportsTheEstimateOfAValidCase) {
+  const Result r = run("check " + case_ + " --set mesh.source=column");
+  EXPECT_EQ(r.status, 0) << r.output;
+  // The default column (1 x 1 x 10 cells, 60 tets) is counted exactly.
+  EXPECT_NE(r.output.find("valid; mesh size estimate: about"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(60 tetrahedra)"), std::string::npos) << r.output;
+}
+
+TEST_F(SizeGuard, TheGuardCanBeOverriddenByAKey) {
+  const Result r =
+      run("check " + case_ + " --set mesh.lc=1e-4 --set mesh.ignore_memory_estimate=true");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("valid; mesh size estimate"), std::string::npos) << r.output;
+}
+
+TEST_F(SizeGuard, HugeThreadCountsAreClampedNotACrash) {
+  const Result r = run("run " + case_ + " -o " + (dir_ / "threads").string() +
+                           " --quiet --set mesh.source=column --set time.t_end=0.1 "
+                           "--set time.dt=0.1",
+                       "OMP_NUM_THREADS=1000000");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("OMP_NUM_THREADS=1000000 is more than"), std::string::npos) << r.output;
+}
+
+}  // namespace
