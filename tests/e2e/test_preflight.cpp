@@ -188,7 +188,8 @@ allow_free_rigid_modes = true
                  {"crack_tet4_v22.msh", "file tag 2", "file tag 6", "(1, 0, 0)",
                   "constraints.allow_coincident_nodes"});
   const fs::path file = write_file("crack_allowed.toml", text + "allow_coincident_nodes = true\n");
-  const Result r = run("check " + file.string());
+  // The default probe line (the axis) does not lie in this two-tetrahedron mesh.
+  const Result r = run("check " + file.string() + " --set output.line=false");
   EXPECT_EQ(r.status, 0) << r.output;
 }
 
