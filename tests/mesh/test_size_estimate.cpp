@@ -70,3 +70,14 @@ TEST(SizeEstimate, MemoryFollowsTheMeasuredRunsOfThePapersMeshes) {
 }
 
 }  // namespace
+
+// The guard refuses a quarter cylinder at lc = 1e-4 mm with 1 GB available, and lets it through
+// when mesh.ignore_memory_estimate is set (check and run then go on to mesh it, which is why
+// this is not an end-to-end test).
+TEST(SizeGuard, TheGuardCanBeOverriddenByAKey) {
+  Config c;
+  c.mesh.cylinder.lc = 1e-4;
+  EXPECT_THROW(biphasic::check_size(c, "case.toml", 1e9), std::exception);
+  c.mesh.ignore_memory_estimate = true;
+  EXPECT_NO_THROW(biphasic::check_size(c, "case.toml", 1e9));
+}
