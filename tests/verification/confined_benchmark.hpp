@@ -10,7 +10,7 @@
 
 namespace biphasic::verification {
 
-/// Times of the tabulated platen stresses [s] (shared/notes/verification.md).
+/// Times of the tabulated platen stresses [s] (docs/verification.md, section 2).
 inline const std::vector<double> kConfinedTimes{10, 25, 50, 75, 100, 150, 200, 300, 500, 1000};
 
 struct ConfinedResult {

@@ -10,7 +10,7 @@
 namespace biphasic::verification {
 
 /// Depths ζ/H below the drained face and time factors T = c t/H² of the tabulated values
-/// (shared/notes/verification.md).
+/// (docs/verification.md, section 1).
 inline const std::vector<double> kTerzaghiDepths{0.1, 0.25, 0.5, 0.75, 1.0};
 inline const std::vector<double> kTerzaghiTimes{0.01, 0.05, 0.1, 0.2, 0.5, 1.0};
 

@@ -14,7 +14,7 @@
 namespace biphasic::verification {
 namespace {
 
-/// Values of the 1D P2/P1 analysis (shared/notes/verification.md): overshoot at r.
+/// Values of the 1D P2/P1 analysis (docs/verification.md, section 3): overshoot at r.
 const std::map<double, double> kOneDimensional{{0.01, 0.2415}, {0.05, 0.156}, {0.1, 0.0774}};
 
 TEST(Oscillation, FirstStepOvershootAgainstR) {

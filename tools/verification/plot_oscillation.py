@@ -14,7 +14,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from verification_csv import read, save  # noqa: E402
 
-# 1D P2/P1, backward Euler, first step (shared/notes/verification.md).
+# 1D P2/P1, backward Euler, first step (docs/verification.md, section 3).
 ONE_D = {0.01: 0.2415, 0.05: 0.156, 0.1: 0.0774}
 LABELS = {"none": "none", "gls": "GLS", "flux_perturbation": "flux perturbation"}
 
