@@ -196,6 +196,11 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   const std::uint64_t case_hash = case_fingerprint(config, mesh);
   if (resume) {
     accept_checkpoint(*resume, checkpoint_path.string(), case_hash, problem.size(), config.time);
+    try {
+      integrator.set_resume_state(resume->integrator_state);
+    } catch (const std::invalid_argument& e) {
+      throw CheckpointError("checkpoint " + checkpoint_path.string() + " is damaged: " + e.what());
+    }
     say("restart from " + checkpoint_path.string() + ": output step " +
         std::to_string(resume->step) + " at t = " + number_text(resume->t) + " s");
     write_json_atomically(summary_path, summary);
@@ -388,7 +393,8 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
                                   {"source_integrated", vb.source_integrated}};
     }
     write_checkpoint(checkpoint_path.string(),
-                     Checkpoint{case_hash, step, t, last_dt, ys, ydots, record.dump()});
+                     Checkpoint{case_hash, step, t, last_dt, ys, ydots, record.dump(),
+                                integrator.resume_state()});
   };
   double t_start = 0.0;
   int step_offset = 0;  // output steps done before this run (a restart)

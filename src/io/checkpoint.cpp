@@ -71,7 +71,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   if (c.ydot.size() != c.y.size())
     throw std::logic_error("write_checkpoint: y and ydot differ in size");
   std::string out;
-  out.reserve(96 + 16 * c.y.size() + c.record.size());
+  out.reserve(104 + 16 * c.y.size() + 8 * c.integrator_state.size() + c.record.size());
   out.append(kMagic, sizeof kMagic);
   put(out, Checkpoint::kFormatVersion);
   put(out, std::uint32_t{0});
@@ -81,8 +81,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   put(out, c.t);
   put(out, c.last_dt);
   put(out, static_cast<std::uint64_t>(c.record.size()));
+  put(out, static_cast<std::uint64_t>(c.integrator_state.size()));
   out.append(reinterpret_cast<const char*>(c.y.data()), c.y.size() * sizeof(double));
   out.append(reinterpret_cast<const char*>(c.ydot.data()), c.ydot.size() * sizeof(double));
+  out.append(reinterpret_cast<const char*>(c.integrator_state.data()),
+             c.integrator_state.size() * sizeof(double));
   out += c.record;
   put(out, fnv1a64(out));
   write_file_atomically(path, out);
@@ -97,9 +100,9 @@ Checkpoint read_checkpoint(const std::string& path) {
   if (std::memcmp(magic.data(), kMagic, sizeof kMagic) != 0)
     throw CheckpointError("checkpoint " + path + " is damaged or not a checkpoint (bad header)");
   const auto version = r.get<std::uint32_t>("header");
-  if (version != Checkpoint::kFormatVersion) {
+  if (version != 1 && version != Checkpoint::kFormatVersion) {
     throw CheckpointError("checkpoint " + path + " has format version " + std::to_string(version) +
-                          "; this build reads version " +
+                          "; this build reads versions 1 to " +
                           std::to_string(Checkpoint::kFormatVersion));
   }
   r.get<std::uint32_t>("header");
@@ -110,13 +113,16 @@ Checkpoint read_checkpoint(const std::string& path) {
   c.t = r.get<double>("header");
   c.last_dt = r.get<double>("header");
   const auto record_size = r.get<std::uint64_t>("header");
-  if (n > bytes.size() / 16 || record_size > bytes.size()) {
+  const auto state_size = version >= 2 ? r.get<std::uint64_t>("header") : std::uint64_t{0};
+  if (n > bytes.size() / 16 || record_size > bytes.size() || state_size > bytes.size() / 8) {
     throw CheckpointError("checkpoint " + path + " is damaged: header gives " + std::to_string(n) +
-                          " unknowns and a record of " + std::to_string(record_size) +
+                          " unknowns, an integrator state of " + std::to_string(state_size) +
+                          " values and a record of " + std::to_string(record_size) +
                           " bytes in a file of " + std::to_string(bytes.size()) + " bytes");
   }
   r.doubles(c.y, n, "state y");
   r.doubles(c.ydot, n, "rate ydot");
+  r.doubles(c.integrator_state, state_size, "integrator state");
   c.record = r.text(record_size, "record");
   const std::size_t body = r.pos();
   const auto checksum = r.get<std::uint64_t>("checksum");

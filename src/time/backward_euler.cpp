@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace biphasic {
 
@@ -68,6 +70,18 @@ struct BackwardEuler::Impl {
   double t = 0.0, dt = 1.0;
   CallbackFailure failure;  ///< an exception caught in the last residual or Jacobian callback
 
+  // What carries from one step to the next (and over a restart, through resume_state()).
+  double t_origin = 0.0;            ///< output times are t_origin + k·time.dt [s]
+  bool resumed = false;             ///< set_resume_state was called: keep t_origin and the rest
+  std::vector<double> y_previous;   ///< state before the last step (empty before the first)
+  double dt_previous = 0.0;         ///< length of the last step [s]
+  int level = 0;                    ///< cut-back depth: the sub-step is time.dt / 2^level
+  int successes = 0;                ///< successful sub-steps at this level
+  bool have_factorisation = false;  ///< the linear solver holds factors KINSOL may reuse
+  // Where the held factorisation was evaluated: t, Δt, y and yₙ (ẏ = (y − yₙ)/Δt).
+  double jac_t = 0.0, jac_dt = 0.0;
+  std::vector<double> jac_y, jac_y_old;
+
   Impl(BiphasicProblem& p, const TimeConfig& tc) : problem(p), time(tc) {}
   ~Impl() {
     if (kin) KINFree(&kin);
@@ -99,10 +113,29 @@ struct BackwardEuler::Impl {
     auto* self = static_cast<Impl*>(data);
     return guarded_callback(self->failure, [&] {
       self->problem.pattern().restore_into(J);
-      self->rate(N_VGetArrayPointer(yv));
-      self->problem.jacobian(self->t, N_VGetArrayPointer(yv), self->ydot.data(), 1.0 / self->dt,
+      const double* y = N_VGetArrayPointer(yv);
+      self->rate(y);
+      self->problem.jacobian(self->t, y, self->ydot.data(), 1.0 / self->dt,
                              SUNSparseMatrix_Data(J));
+      self->jac_t = self->t;
+      self->jac_dt = self->dt;
+      self->jac_y.assign(y, y + self->problem.size());
+      self->jac_y_old = self->y_old;
     });
+  }
+
+  /// Evaluates and factorises the Jacobian at the recorded point (jac_t, jac_dt, jac_y,
+  /// jac_y_old), as KINSOL's set-up would: the factors an uninterrupted run would hold.
+  /// Returns false (leaving no factorisation) if either fails.
+  bool refactorise_at_recorded_point() {
+    t = jac_t;
+    dt = jac_dt;
+    if (time.volume_rate == VolumeRate::Conservative) problem.set_conservative_volume_rate(dt);
+    y_old = jac_y_old;
+    std::copy(jac_y.begin(), jac_y.end(), N_VGetArrayPointer(y));
+    failure.clear();
+    if (jacobian_fn(y, nullptr, A, this, nullptr, nullptr) != 0) return false;
+    return SUNLinSolSetup(ls.get(), A) == 0;
   }
 };
 
@@ -156,19 +189,97 @@ int BackwardEuler::planned_outputs() const {
   return checked_interval_count(impl_->time.t_end, impl_->time.dt);
 }
 
+namespace {
+// Layout of BackwardEuler::resume_state(): a header of kResumeHeader values, then y_previous
+// (n values, if dt_previous > 0), then jac_y and jac_y_old (n each, if a factorisation is held).
+constexpr double kResumeLayout = 1.0;
+constexpr std::size_t kResumeHeader = 8;
+}  // namespace
+
+std::vector<double> BackwardEuler::resume_state() const {
+  const Impl& m = *impl_;
+  std::vector<double> s{kResumeLayout,
+                        m.t_origin,
+                        static_cast<double>(m.level),
+                        static_cast<double>(m.successes),
+                        m.y_previous.empty() ? 0.0 : m.dt_previous,
+                        m.have_factorisation ? 1.0 : 0.0,
+                        m.jac_t,
+                        m.jac_dt};
+  s.insert(s.end(), m.y_previous.begin(), m.y_previous.end());
+  if (m.have_factorisation) {
+    s.insert(s.end(), m.jac_y.begin(), m.jac_y.end());
+    s.insert(s.end(), m.jac_y_old.begin(), m.jac_y_old.end());
+  }
+  return s;
+}
+
+void BackwardEuler::set_resume_state(const std::vector<double>& s) {
+  Impl& m = *impl_;
+  m.resumed = false;
+  if (s.empty()) return;
+  const std::size_t n = static_cast<std::size_t>(m.problem.size());
+  auto refuse = [&](const std::string& why) {
+    throw std::invalid_argument("backward Euler restart state: " + why);
+  };
+  if (s.size() < kResumeHeader || s[0] != kResumeLayout)
+    refuse("unknown layout (written by another version)");
+  const bool previous = s[4] > 0.0, factorised = s[5] != 0.0;
+  const std::size_t expected = kResumeHeader + (previous ? n : 0) + (factorised ? 2 * n : 0);
+  if (s.size() != expected) {
+    refuse(std::to_string(s.size()) + " values where " + std::to_string(expected) +
+           " were expected for " + std::to_string(n) + " unknowns");
+  }
+  if (!(s[2] >= 0.0 && s[2] <= m.time.newton.max_cutbacks && s[3] >= 0.0 && s[3] < 1e9))
+    refuse("cut-back level " + std::to_string(s[2]) + " out of range");
+  m.t_origin = s[1];
+  m.level = static_cast<int>(s[2]);
+  m.successes = static_cast<int>(s[3]);
+  m.dt_previous = s[4];
+  auto at = s.begin() + kResumeHeader;
+  m.y_previous.assign(at, at + (previous ? n : 0));
+  at += previous ? n : 0;
+  m.have_factorisation = factorised;
+  m.jac_t = s[6];
+  m.jac_dt = s[7];
+  if (factorised) {
+    m.jac_y.assign(at, at + n);
+    m.jac_y_old.assign(at + n, at + 2 * n);
+  }
+  m.resumed = true;
+}
+
 void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
   Impl& m = *impl_;
   BiphasicProblem& problem = m.problem;
   const NewtonConfig& newton = m.time.newton;
   const Index n = problem.size();
   const double t_end = m.time.t_end;
-  const int num_steps = checked_interval_count(t_end - t0, m.time.dt);
   double* yv = N_VGetArrayPointer(m.y);
   double* fs = N_VGetArrayPointer(m.fscale);
   std::vector<double> F(n);
-  bool have_factorisation = false;
-  std::vector<double> y_previous;  // state before the last step (empty before the first)
-  double dt_previous = 0.0;
+  // Output times t_origin + k·time.dt: a restart at output k0 continues the same grid.
+  long long k0 = 0;
+  if (m.resumed) {
+    k0 = std::llround((t0 - m.t_origin) / m.time.dt);
+    if (m.have_factorisation && !m.refactorise_at_recorded_point()) {
+      m.have_factorisation = false;
+      note("restart: the factorisation held at the checkpoint could not be rebuilt (" +
+           m.failure.message + "); the next step starts with a fresh one");
+    }
+  } else {
+    m.t_origin = t0;
+    m.y_previous.clear();
+    m.dt_previous = 0.0;
+    m.level = m.successes = 0;
+    m.have_factorisation = false;
+  }
+  m.resumed = false;
+  const long long total_steps = checked_interval_count(t_end - m.t_origin, m.time.dt);
+  const int num_steps = static_cast<int>(std::max(1LL, total_steps - k0));
+  std::vector<double>& y_previous = m.y_previous;
+  double& dt_previous = m.dt_previous;
+  bool& have_factorisation = m.have_factorisation;
 
   // One step from (t, y) to t_next; the solution is left in yv. Returns the reason of a
   // failure (empty on success) and adds the Newton iterations to `iterations`; `newton_ran`
@@ -254,11 +365,12 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
   // to time.dt / 2^max_cutbacks; after kGrowAfter successful sub-steps at one size the step
   // doubles again. Sub-steps never pass the next output time t0 + k·time.dt.
   constexpr int kGrowAfter = 2;
-  int level = 0;  // sub-step = time.dt / 2^level
-  int successes = 0;
+  int& level = m.level;  // sub-step = time.dt / 2^level
+  int& successes = m.successes;
   double t = t0;
   for (int step = 1; step <= num_steps; ++step) {
-    const double t_out = (step == num_steps) ? t_end : t0 + step * m.time.dt;
+    const double t_out =
+        (step == num_steps) ? t_end : m.t_origin + static_cast<double>(k0 + step) * m.time.dt;
     const long jac_before = problem.stats().jacobian_evaluations;
     long iterations = 0;
     int sub_steps = 0;

@@ -39,6 +39,13 @@ class BackwardEuler final : public TimeIntegrator {
                                          const std::vector<double>& ydot)>;
   void set_sub_step_hook(SubStepHook hook) { sub_step_hook_ = std::move(hook); }
 
+  /// Backward Euler's state beyond (t, y): the time origin of the output grid, the state and
+  /// length of the previous step (the next Newton guess extrapolates along it), the cut-back
+  /// level, and the point (t, Δt, y, yₙ) where the kept factorisation was evaluated; restored,
+  /// it reproduces an uninterrupted run to round-off.
+  std::vector<double> resume_state() const override;
+  void set_resume_state(const std::vector<double>& state) override;
+
   const IntegratorStats& stats() const override { return stats_; }
   const LinearSolverStats& linear_solver_stats() const override { return ls_stats_; }
 

@@ -114,6 +114,14 @@ class TimeIntegrator {
   virtual int planned_outputs() const = 0;
   virtual const IntegratorStats& stats() const = 0;
   virtual const LinearSolverStats& linear_solver_stats() const = 0;
+  /// What the integrator needs beyond (t, y) to continue from the current output time exactly
+  /// as an uninterrupted run would; read by an observer for a checkpoint. Empty where nothing
+  /// is carried over (BDF: IDA's history cannot be restored; docs/output_and_restart.md).
+  virtual std::vector<double> resume_state() const { return {}; }
+  /// Makes the next run(t0, …) continue from a checkpoint at t0 with the state resume_state()
+  /// returned there. An empty state starts afresh at t0. Throws std::invalid_argument if the
+  /// state does not fit this problem.
+  virtual void set_resume_state(const std::vector<double>& /*state*/) {}
   /// Where the integrator's notes during a run go (one line each; e.g. cut-backs). None by
   /// default.
   void set_log(std::function<void(const std::string&)> log) { log_ = std::move(log); }
