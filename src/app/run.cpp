@@ -21,6 +21,7 @@
 
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
+#include "biphasic/app/segment_counters.hpp"
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
@@ -365,6 +366,10 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
                           {"factorization", ls.factor_seconds},
                           {"linear_solve", ls.solve_seconds},
                           {"other", wall - mesh_seconds - setup_seconds - assembly - linear}};
+    // After a restart: the totals the checkpoint carried plus this segment's work.
+    for (const char* key : {"counters", "timings", "cutbacks"})
+      if (carried.contains(key) && summary.contains(key))
+        summary[key] = combine_segments(carried[key], summary[key]);
   };
 
   std::vector<double> y(problem.size(), 0.0);
@@ -386,6 +391,9 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   auto write_restart_point = [&](int step, double t, double last_dt, const std::vector<double>& ys,
                                  const std::vector<double>& ydots) {
     nlohmann::json record{{"steps", summary["steps"]}, {"outputs", summary["outputs"]}};
+    record_counters(seconds_since(wall0));  // totals up to this output, earlier segments included
+    for (const char* key : {"counters", "timings", "cutbacks"})
+      if (summary.contains(key)) record[key] = summary[key];
     if (balance) {
       const VolumeBalanceRecord& vb = balance->record();
       record["volume_balance"] = {{"volume_change", vb.volume_change},

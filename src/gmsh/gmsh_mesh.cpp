@@ -405,7 +405,7 @@ Mesh extract_current_model() {
     orient_tets(mesh);
     orient_boundary_faces(mesh);
   }
-  check_mesh(mesh);
+  check_mesh(mesh);  // before the node sets are looked up on the tets' edges
   // File tags: corners keep their order in both branches; a linear mesh's edge nodes are new.
   mesh.file_tags.assign(static_cast<std::size_t>(mesh.num_nodes()), -1);
   for (std::size_t i = 0; i < corner_tags.size(); ++i)
@@ -415,6 +415,7 @@ Mesh extract_current_model() {
       mesh.file_tags[corner_tags.size() + i] = static_cast<Index>(edge_tags[i]);
   }
   mesh.node_sets = extract_node_sets(mesh, new_index, coordinates);
+  check_mesh(mesh);  // again, for the node sets' names
   return mesh;
 }
 

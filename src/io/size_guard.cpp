@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <numbers>
@@ -44,27 +45,96 @@ double cylinder_face_area(const QuarterCylinderSpec& s, const std::string& face)
   return s.radius * s.height;  // symmetry_x, symmetry_y
 }
 
-/// The element count in the $Elements header of a .msh file (2.2 or 4.1, ASCII or binary);
-/// 0 if it cannot be read.
-double msh_element_count(const std::string& path) {
+/// Nodes per element of the gmsh element types a tetrahedral mesh file holds (points, lines,
+/// triangles, tetrahedra of order 1 and 2); 0 for any other type.
+int msh_nodes_per_element(int type) {
+  // gmsh type → nodes: 1 line(2), 2 triangle(3), 4 tet(4), 8 line(3), 9 triangle(6),
+  // 11 tet(10), 15 point(1).
+  constexpr int kNodes[16] = {0, 2, 3, 0, 4, 0, 0, 0, 3, 6, 0, 10, 0, 0, 0, 1};
+  return type >= 0 && type < 16 ? kNodes[type] : 0;
+}
+
+bool is_tet(int type) { return type == 4 || type == 11; }
+
+/// The tetrahedra in the $Elements section of a .msh file (2.2 or 4.1, ASCII or binary),
+/// skipping points, lines and triangles block by block (2.2 ASCII: line by line). Where the
+/// section cannot be walked (an element type other than those above, a truncated file), every
+/// element of its header counts as a tetrahedron: an upper bound. 0 if even the header cannot
+/// be read.
+double msh_tet_count(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line, version;
-  int file_type = 0;
+  int file_type = 0, data_size = 0;
   while (std::getline(in, line) && line.rfind("$MeshFormat", 0) != 0) {
   }
-  if (!(in >> version >> file_type)) return 0.0;
+  if (!(in >> version >> file_type >> data_size)) return 0.0;
   while (std::getline(in, line) && line.rfind("$Elements", 0) != 0) {
   }
   if (!in) return 0.0;
-  if (version.rfind("2", 0) == 0 || file_type == 0) {
-    double first = 0.0, second = 0.0;  // 2.2: count; 4.1 ASCII: blocks, count
-    if (!(in >> first)) return 0.0;
-    if (version.rfind("2", 0) == 0) return first;
-    return (in >> second) ? second : 0.0;
+  const bool v2 = version.rfind("2", 0) == 0;
+  double tets = 0.0;
+  if (v2 && file_type == 0) {  // count, then one line per element: tag type ...
+    double count = 0.0;
+    if (!(in >> count)) return 0.0;
+    std::getline(in, line);
+    for (double i = 0; i < count; ++i) {
+      long tag = 0;
+      int type = 0;
+      if (!std::getline(in, line) || std::sscanf(line.c_str(), "%ld %d", &tag, &type) != 2)
+        return count;
+      if (is_tet(type)) ++tets;
+    }
+    return tets;
   }
-  std::uint64_t header[2] = {0, 0};  // 4.1 binary: blocks, count (size_t)
+  if (v2) {  // binary 2.2: count, then blocks of (type, n, tags) headers and int data
+    double count = 0.0;
+    if (!(in >> count)) return 0.0;
+    std::getline(in, line);
+    for (double seen = 0; seen < count;) {
+      std::int32_t header[3] = {0, 0, 0};
+      if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return count;
+      const int per = msh_nodes_per_element(header[0]);
+      if (per == 0 || header[1] <= 0 || header[2] < 0 || header[2] > 1000) return count;
+      if (is_tet(header[0])) tets += header[1];
+      seen += header[1];
+      in.seekg(static_cast<std::streamoff>(header[1]) * (1 + header[2] + per) * 4, std::ios::cur);
+    }
+    return tets;
+  }
+  if (file_type == 0) {  // ASCII 4.1: blocks, count, min, max; per block dim tag type n
+    double blocks = 0.0, count = 0.0;
+    if (!(in >> blocks >> count)) return 0.0;
+    std::getline(in, line);
+    for (double b = 0; b < blocks; ++b) {
+      int dim = 0, tag = 0, type = 0;
+      double n = 0.0;
+      if (!(in >> dim >> tag >> type >> n) || n < 0) return count;
+      std::getline(in, line);
+      if (is_tet(type)) tets += n;
+      for (double i = 0; i < n; ++i)
+        if (!std::getline(in, line)) return count;
+    }
+    return tets;
+  }
+  // Binary 4.1: size_t blocks, count, min, max; per block int dim, tag, type, size_t n, then
+  // n (1 + nodes) size_t.
+  std::uint64_t header[4] = {0, 0, 0, 0};
+  if (data_size != 8) return 0.0;
   if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return 0.0;
-  return static_cast<double>(header[1]);
+  const double count = static_cast<double>(header[1]);
+  for (std::uint64_t b = 0; b < header[0]; ++b) {
+    std::int32_t ints[3] = {0, 0, 0};
+    std::uint64_t n = 0;
+    if (!in.read(reinterpret_cast<char*>(ints), sizeof ints) ||
+        !in.read(reinterpret_cast<char*>(&n), sizeof n))
+      return count;
+    const int per = msh_nodes_per_element(ints[2]);
+    if (per == 0 || n > header[1]) return count;
+    if (is_tet(ints[2])) tets += static_cast<double>(n);
+    in.seekg(static_cast<std::streamoff>(n * (1 + static_cast<std::uint64_t>(per)) * 8),
+             std::ios::cur);
+  }
+  return in ? tets : count;
 }
 
 std::string gigabytes(double bytes) {
@@ -119,7 +189,7 @@ SizeEstimate estimate_size(const Config& config) {
       break;
     }
     case MeshSource::File:
-      e.tets = msh_element_count(m.file);  // every element counted as a tet: an upper bound
+      e.tets = msh_tet_count(m.file);
       e.unknowns = kUnknownsPerTet * e.tets;
       e.keys = "mesh.file";
       break;

@@ -221,6 +221,30 @@ void check_mesh(const Mesh& mesh) {
       }
     }
   }
+  // Boundary conditions name a set: a name given to a surface and a point or curve, or to a
+  // point and a curve, would be resolved silently to one of them.
+  auto kind = [](int dimension) {
+    return dimension == 0 ? std::string("physical point") : std::string("physical curve");
+  };
+  for (std::size_t i = 0; i < mesh.node_sets.size(); ++i) {
+    const NodeSet& s = mesh.node_sets[i];
+    const std::string where = kind(s.dimension) + " '" + s.name + "'";
+    for (const Index n : s.nodes)
+      if (n < 0 || n >= nn) fail(where + ": node " + std::to_string(n) + " is not a node index");
+    if (mesh.find_boundary(s.name)) {
+      fail("the name '" + s.name + "' is given to a physical surface and a " + kind(s.dimension) +
+           ": a boundary condition naming it would apply to the surface alone; rename one of "
+           "them");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (mesh.node_sets[j].name == s.name) {
+        fail("the name '" + s.name + "' is given to a " + kind(mesh.node_sets[j].dimension) +
+             " and a " + kind(s.dimension) +
+             ": a boundary condition naming it would apply to one of them alone; rename one of "
+             "them");
+      }
+    }
+  }
 }
 
 }  // namespace biphasic

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -298,9 +299,9 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     // which measures the load increment: converged when ‖R_f‖ ≤ max(rtol_f ‖R_f(predictor)‖,
     // atol_f).
     std::copy(y.begin(), y.end(), yv);
-    problem.apply_dirichlet(t_next, yv, nullptr);
-    m.rate(yv);
     try {
+      problem.apply_dirichlet(t_next, yv, nullptr);
+      m.rate(yv);
       problem.residual(t_next, yv, m.ydot.data(), F.data());
     } catch (const InvertedElement& e) {
       return std::string(
@@ -309,7 +310,9 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
              e.what();
     } catch (const std::exception& e) {
       fatal = true;
-      return std::string("the residual could not be evaluated at the step's first trial state: ") +
+      return std::string(
+                 "the boundary values or the residual could not be evaluated at the step's "
+                 "first trial state: ") +
              e.what();
     }
     const auto [ru0, rp0] = problem.field_norms(F.data());
@@ -330,6 +333,29 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     };
     initial_guess();
 
+    // The residual at the current iterate against what may be accepted, field by field (≤ 1:
+    // acceptable): the step's tolerance, or round-off of the problem's own scales (a relative
+    // tolerance against a predictor residual that is itself round-off, as in a hold with
+    // atol = 0, cannot be met and need not be). A NaN or a failed evaluation is +inf.
+    auto scaled_residual = [&]() -> double {
+      try {
+        m.rate(yv);
+        problem.residual(m.t, yv, m.ydot.data(), F.data());
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::infinity();
+      }
+      constexpr double kRoundoff = 1e-10;
+      const auto [u_scale, p_scale] = problem.solution_scales();
+      const auto [ru, rp] = problem.field_norms(F.data());
+      const double ratio_u =
+          ru / std::max(1.0 / su, kRoundoff * problem.stiffness_scale() * u_scale);
+      const double ratio_p =
+          rp / std::max(1.0 / sp, kRoundoff * problem.conductance_scale() * p_scale);
+      if (std::isnan(ratio_u) || std::isnan(ratio_p))
+        return std::numeric_limits<double>::infinity();
+      return std::max(ratio_u, ratio_p);
+    };
+    double stalled_residual = 0.0;
     int flag = 0;
     newton_ran = true;
     // Attempts: (1) reuse the factorisation (modified Newton); (2) fresh Jacobian every
@@ -346,7 +372,11 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       long nni = 0;
       KINGetNumNonlinSolvIters(m.kin, &nni);
       iterations += nni;
-      if (flag >= 0) return {};
+      // KIN_STEP_LT_STPTOL means the Newton steps vanished, not that the residual is small
+      // (a stagnating iteration): accepted only if the residual meets its tolerance.
+      stalled_residual = 0.0;
+      if (flag == KIN_STEP_LT_STPTOL) stalled_residual = scaled_residual();
+      if (flag >= 0 && stalled_residual <= 1.0) return {};
       ++stats_.nonlinear_failures;
       // An exception other than an inverted element, in a callback or the linear solver: the
       // same again would fail the same way.
@@ -356,6 +386,11 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
       }
     }
     std::string reason = kinsol_flag_message(flag);
+    if (stalled_residual > 1.0) {
+      std::ostringstream r;
+      r << ", with the residual still " << stalled_residual << " times its tolerance";
+      reason += r.str();
+    }
     if (!m.failure.empty()) reason += ": " + m.failure.message;
     if (!ls_stats_.last_error.empty()) reason += ": " + ls_stats_.last_error;
     return reason;

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <tuple>
 
+#include "biphasic/io/atomic_file.hpp"
+#include "biphasic/io/checkpoint.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/solver_messages.hpp"
 
@@ -171,11 +173,17 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
   const BdfConfig& bdf = m.time.bdf;
   const Index n = problem.size();
   const double t_end = m.time.t_end;
+  // steps.csv: every accepted internal step. A restart (t0 > 0) keeps the rows up to t0 and
+  // appends; every write is checked (a full disk stops the run naming the file).
   std::ofstream step_log;
-  if (bdf.step_log && !m.step_log_path.empty()) {
-    step_log.open(m.step_log_path);
-    step_log << "t,h,order\n";
+  const std::string& log_path = m.step_log_path;
+  if (bdf.step_log && !log_path.empty()) {
+    const bool append = t0 > 0.0 && std::ifstream(log_path).good();
+    if (append) keep_csv_rows_until(log_path, t0);
+    step_log.open(log_path, append ? std::ios::app : std::ios::trunc);
+    if (!append) step_log << "t,h,order\n";
     step_log.precision(17);
+    flush_checked(step_log, log_path);
   }
 
   // Breakpoints after t0 (load-curve kinks), then the end.
@@ -323,7 +331,10 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     stats_.step_sizes.push_back(h);
     last_step = h;
     if (q >= 1 && q <= 5) ++stats_.order_counts[q - 1];
-    if (step_log) step_log << tret << ',' << h << ',' << q << '\n';
+    if (step_log.is_open()) {
+      step_log << tret << ',' << h << ',' << q << '\n';
+      if (!step_log) flush_checked(step_log, log_path);  // throws, naming the file and cause
+    }
     // Outputs passed by this step, by IDA's interpolation.
     while (next_output <= outputs && output_time(next_output) <= tret + 1e-12 * t_end) {
       const double to = std::min(output_time(next_output), tret);
@@ -350,6 +361,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
                           e.what());
       }
       std::tie(info.residual_u, info.residual_p) = problem.field_norms(F.data());
+      if (step_log.is_open()) flush_checked(step_log, log_path);  // on disk with the checkpoint
       if (observer) observer(info, y_out, ydot_out);
       ++next_output;
     }
@@ -367,6 +379,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
   }
   std::copy_n(N_VGetArrayPointer(m.yy), n, y.begin());
   accumulate();
+  if (step_log.is_open()) flush_checked(step_log, log_path);
 }
 
 std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, const Config& config,

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "biphasic/time/solver_messages.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
@@ -73,8 +74,12 @@ class RegularisedSystem {
     x_ = N_VNew_Serial(n, ctx_);
     b_ = N_VNew_Serial(n, ctx_);
     const int flag = SUNLinSolSetup(ls_.get(), M_);
-    if (flag != 0)
-      throw std::runtime_error("factorisation failed (flag " + std::to_string(flag) + ")");
+    if (flag != 0) {
+      const LinearSolverStats& st = stats ? *stats : own_stats_;
+      throw std::runtime_error("the consistent start's regularised system could not be " +
+                               std::string("factorised: ") + linear_solver_flag_message(flag) +
+                               (st.last_error.empty() ? "" : ": " + st.last_error));
+    }
   }
   ~RegularisedSystem() {
     N_VDestroy(x_);
@@ -90,7 +95,8 @@ class RegularisedSystem {
     std::copy(rhs.begin(), rhs.end(), N_VGetArrayPointer(b_));
     const int flag = SUNLinSolSolve(ls_.get(), M_, x_, b_, 0.0);
     if (flag != 0)
-      throw std::runtime_error("linear solve failed (flag " + std::to_string(flag) + ")");
+      throw std::runtime_error("the consistent start's regularised system could not be solved: " +
+                               linear_solver_flag_message(flag));
     const double* x = N_VGetArrayPointer(x_);
     return {x, x + rhs.size()};
   }

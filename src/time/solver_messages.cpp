@@ -2,6 +2,7 @@
 
 #include <ida/ida.h>
 #include <kinsol/kinsol.h>
+#include <sundials/sundials_linearsolver.h>
 
 #include <sstream>
 
@@ -56,6 +57,33 @@ std::string kinsol_flag_message(int flag) {
       return "a vector operation failed in the nonlinear solver (KIN_VECTOROP_ERR)";
     default:
       return "the nonlinear solver stopped for a reason it does not name (KINSOL return " +
+             std::to_string(flag) + ")";
+  }
+}
+
+std::string linear_solver_flag_message(int flag) {
+  switch (flag) {
+    case SUNLS_SUCCESS:
+      return "succeeded (SUNLS_SUCCESS)";
+    case SUNLS_MEM_FAIL:
+      return "out of memory in the linear solver (SUNLS_MEM_FAIL)";
+    case SUNLS_ILL_INPUT:
+    case SUNLS_MEM_NULL:
+      return "the linear solver was given an invalid input (SUNLS_ILL_INPUT)";
+    case SUNLS_PACKAGE_FAIL_REC:
+    case SUNLS_LUFACT_FAIL:
+      return "the factorisation found the matrix singular (a zero pivot): are all rigid-body "
+             "modes constrained? (SUNLS_PACKAGE_FAIL_REC)";
+    case SUNLS_PACKAGE_FAIL_UNREC:
+      return "the sparse direct solver failed (SUNLS_PACKAGE_FAIL_UNREC)";
+    case SUNLS_CONV_FAIL:
+    case SUNLS_RES_REDUCED:
+      return "the iterative solver did not reach its tolerance (SUNLS_CONV_FAIL)";
+    case SUNLS_PSET_FAIL_REC:
+    case SUNLS_PSET_FAIL_UNREC:
+      return "the preconditioner could not be set up (SUNLS_PSET_FAIL)";
+    default:
+      return "the linear solver stopped for a reason it does not name (SUNLinearSolver return " +
              std::to_string(flag) + ")";
   }
 }

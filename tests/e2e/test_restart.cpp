@@ -165,6 +165,16 @@ void expect_same_outputs(const fs::path& a, const fs::path& b, double tolerance)
   EXPECT_EQ(sb["status"], "completed");
   EXPECT_EQ(sa["outputs"].size(), sb["outputs"].size());
   EXPECT_EQ(sa["steps"].size(), sb["steps"].size());
+  // The counters add the segments: the same steps and Newton iterations as one run, and one
+  // factorisation more (the kept one, rebuilt at the restart).
+  const auto& ca = sa["counters"];
+  const auto& cb = sb["counters"];
+  EXPECT_EQ(cb["steps"], ca["steps"]);
+  EXPECT_EQ(cb["newton_iterations"], ca["newton_iterations"]);
+  const long extra =
+      cb["jacobian_evaluations"].get<long>() - ca["jacobian_evaluations"].get<long>();
+  EXPECT_TRUE(extra == 0 || extra == 1) << extra;
+  EXPECT_GE(sb["timings"]["wall"].get<double>(), 0.0);
 }
 
 // Killed (SIGKILL) after a few outputs, then continued: the outputs equal one uninterrupted run.

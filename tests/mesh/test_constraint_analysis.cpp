@@ -194,3 +194,32 @@ TEST(MeshNodeSets, GeneratedMeshesHaveNoFileTagsOrNodeSets) {
 }
 
 }  // namespace
+
+namespace {
+
+// A name shared by two sets would let a boundary condition silently pick one of them.
+TEST(MeshNodeSets, ANameSharedBySetsOfTwoKindsIsRefused) {
+  using biphasic::Mesh;
+  using biphasic::NodeSet;
+  const Mesh sound = column();
+  auto message_for = [&](const std::vector<NodeSet>& sets) -> std::string {
+    Mesh mesh = sound;
+    mesh.node_sets = sets;
+    try {
+      biphasic::check_mesh(mesh);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(message_for({{"pin", 0, {0}}, {"edge", 1, {0, 1}}}), "accepted");
+  EXPECT_NE(message_for({{"pin", 0, {0}}, {"pin", 1, {0, 1}}})
+                .find("'pin' is given to a physical point and a physical curve"),
+            std::string::npos);
+  EXPECT_NE(message_for({{"top", 1, {0}}}).find("'top' is given to a physical surface"),
+            std::string::npos);
+  EXPECT_NE(message_for({{"pin", 0, {sound.num_nodes()}}}).find("is not a node index"),
+            std::string::npos);
+}
+
+}  // namespace

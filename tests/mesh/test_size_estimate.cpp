@@ -52,6 +52,19 @@ TEST(SizeEstimate, GmshMeshesWithinFortyPercent) {
   expect_close(s, biphasic::generate_sphere_octant(s.mesh.sphere_octant), "sphere octant");
 }
 
+// A mesh file's estimate counts its tetrahedra alone (not its points, lines and triangles), in
+// each of gmsh's formats: equal to the tetrahedra the reader finds.
+TEST(SizeEstimate, MeshFilesCountTheirTetrahedraInEveryFormat) {
+  for (const char* name : {"full_cylinder_tet4_v22.msh", "full_cylinder_tet4_v22_binary.msh",
+                           "full_cylinder_tet10_v41.msh", "full_cylinder_tet10_v41_binary.msh"}) {
+    Config c;
+    c.mesh.source = MeshSource::File;
+    c.mesh.file = std::string(BIPHASIC_SOURCE_DIR) + "/tests/mesh/data/" + name;
+    const biphasic::Mesh mesh = biphasic::read_gmsh(c.mesh.file);
+    EXPECT_EQ(biphasic::estimate_size(c).tets, static_cast<double>(mesh.tets.size())) << name;
+  }
+}
+
 TEST(SizeEstimate, MemoryFollowsTheMeasuredRunsOfThePapersMeshes) {
   // Peak memory measured with MUMPS on meshes 1-4 (docs/performance.md) [GB].
   const double measured[4][2] = {{24'910, 0.25}, {54'370, 0.62}, {119'773, 1.69}, {243'403, 4.06}};

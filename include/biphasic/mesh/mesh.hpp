@@ -86,8 +86,9 @@ void orient_boundary_faces(Mesh& mesh);
 
 /// Checks every Mesh invariant: indices in range, corners < num_vertices ≤ edge nodes, every
 /// vertex is a corner of some tet, one edge node per vertex pair shared by all tets and
-/// boundary faces using that edge, boundary corners are vertices, positive tet volumes.
-/// Throws std::runtime_error describing the first violation found.
+/// boundary faces using that edge, boundary corners are vertices, positive tet volumes, node
+/// sets' nodes in range, and no name shared by two sets (surface, point or curve). Throws
+/// std::runtime_error describing the first violation found.
 void check_mesh(const Mesh& mesh);
 
 }  // namespace biphasic

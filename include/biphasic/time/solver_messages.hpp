@@ -10,6 +10,10 @@ namespace biphasic {
 /// time.newton.max_iterations iterations (KIN_MAXITER_REACHED)".
 std::string kinsol_flag_message(int flag);
 
+/// A SUNLinearSolver's return flag (setup or solve) as a sentence, e.g. "the factorisation found
+/// the matrix singular (a zero pivot) … (SUNLS_PACKAGE_FAIL_REC)".
+std::string linear_solver_flag_message(int flag);
+
 /// IDA's return flag (IDASolve) as a sentence; `h` [s] is the step IDA last tried.
 std::string ida_flag_message(int flag, double h);
 
