@@ -10,62 +10,18 @@
 #include <stdexcept>
 #include <string>
 
-#include "biphasic/io/case_file.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 #include "biphasic/time/solver_messages.hpp"
+#include "column_case.hpp"
 
 namespace biphasic {
 namespace {
 
-/// 1 × 1 × 1 mm confined column, 4 layers, drained top pushed down 5 % over the first second,
-/// then held; outputs every second to t = 4 s.
-const char* kCase = R"(
-format_version = 1
-[mesh]
-source = "column"
-[mesh.column]
-nz = 4
-[material]
-lambda = 0.2
-mu = 0.5
-permeability = 1e-2
-[curves]
-ramp = [[0.0, 0.0], [1.0, 1.0]]
-[[boundary]]
-name = "top"
-type = "displacement"
-component = "z"
-value = -0.05
-curve = "ramp"
-[[boundary]]
-name = "top"
-type = "pressure"
-value = 0.0
-[[boundary]]
-name = "bottom"
-type = "displacement"
-component = "z"
-value = 0.0
-[[boundary]]
-name = "x0"
-type = "symmetry"
-[[boundary]]
-name = "y0"
-type = "symmetry"
-[time]
-t_end = 4.0
-dt = 1.0
-[linear_solver]
-type = "klu"
-ordering = "amd"
-[output]
-fields = false
-)";
-
+/// The shared column (column_case.hpp), its top pushed down 5 %.
 Config config(const std::vector<std::string>& overrides = {}) {
-  return parse_case(kCase, "failures.toml", overrides, ".");
+  return column_case::config("-0.05", "failures.toml", overrides);
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -115,8 +71,7 @@ TEST(NewtonTolerance, DefaultToleranceSolvesEveryStep) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BackwardEuler be(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   int loaded_steps = 0;
   be.run(0.0, y, [&](const StepInfo& info, const std::vector<double>& ys, auto&) {
     if (info.step == 1) {
@@ -137,8 +92,7 @@ TEST(BdfMaxSteps, TinyLimitStopsTheRunWithAClearMessage) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   try {
     bdf.run(0.0, y, nullptr);
     FAIL() << "ran with at most 3 internal steps per output";
@@ -156,8 +110,7 @@ TEST(BdfMaxSteps, EnoughStepsRunToTheEnd) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   int outputs = 0;
   bdf.run(0.0, y, [&](const StepInfo& info, auto&, auto&) {
     EXPECT_LE(info.internal_steps, 500);
