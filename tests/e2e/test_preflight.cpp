@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/mixed_order_msh.hpp"
 #include "../common/run_binary.hpp"
 
 namespace {
@@ -210,6 +211,25 @@ TEST(Preflight, CheckValidatesNamesFormulasAndMeshFiles) {
   text.replace(text.find(data("full_cylinder_tet10_v41.msh")),
                data("full_cylinder_tet10_v41.msh").size(), garbage.string());
   expect_refused("garbage.toml", text, {"mesh.file = \"" + garbage.string() + "\""});
+}
+
+// A binary .msh file whose one volume holds both 4-node and 10-node tetrahedra (gmsh corrupted
+// its heap reading one) is bad input: `check` and `run` exit 1 before any work, naming the file
+// and the mixed orders.
+TEST(Preflight, BinaryMeshMixingElementOrdersIsRefusedNamingTheFile) {
+  for (const char* version : {"v41", "v22"}) {
+    const fs::path msh = scratch() / (std::string("mixed_") + version + "_binary.msh");
+    if (version == std::string("v41"))
+      biphasic::mixed_order_msh::write_mixed_binary_v41(msh.string());
+    else
+      biphasic::mixed_order_msh::write_mixed_binary_v22(msh.string());
+    std::string text = cylinder_case(kHeldByPointAndCurve);
+    text.replace(text.find(data("full_cylinder_tet10_v41.msh")),
+                 data("full_cylinder_tet10_v41.msh").size(), msh.string());
+    expect_refused(std::string("mixed_") + version + ".toml", text,
+                   {"mesh.file = \"" + msh.string() + "\"",
+                    "mixed element orders: both 4-node and 10-node tetrahedra"});
+  }
 }
 
 TEST(Preflight, HeldCylinderPassesCheck) {
