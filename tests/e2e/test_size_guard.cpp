@@ -71,6 +71,28 @@ TEST_F(SizeGuard, MeshesTooLargeForTheMachineAreRefusedBeforeMeshing) {
   }
 }
 
+// A column beyond the generator's limit of 10^8 cells is bad input even with the memory
+// estimate overridden: exit 1 before any work (no allocation, no output folder), naming the
+// case, the keys, the counts and the limit.
+TEST_F(SizeGuard, ColumnsBeyondTheCellLimitAreRefusedEvenWithTheEstimateIgnored) {
+  for (const char* command : {"run", "check"}) {
+    double seconds = 0.0;
+    const Result r = timed(command,
+                           "--set mesh.source=column --set mesh.column.nx=1000 "
+                           "--set mesh.column.ny=1000 --set mesh.column.nz=101 "
+                           "--set mesh.ignore_memory_estimate=true",
+                           seconds);
+    EXPECT_EQ(r.status, 1) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find(case_ + ": mesh.column.nx, mesh.column.ny, mesh.column.nz: 1000 * "
+                                    "1000 * 101 = 101000000 cells is more than the limit of "
+                                    "100000000"),
+              std::string::npos)
+        << r.output;
+    EXPECT_LT(seconds, 10.0) << command;
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+  }
+}
+
 TEST_F(SizeGuard, CheckReportsTheEstimateOfAValidCase) {
   const Result r = run("check " + case_ + " --set mesh.source=column");
   EXPECT_EQ(r.status, 0) << r.output;
