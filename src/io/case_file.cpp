@@ -8,6 +8,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -786,6 +787,16 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
   if (config.mesh.source == S::Column) {
     check_graded_layers("mesh.column.nz", column.nz, "mesh.column.grading_faces",
                         column.grading_faces, "mesh.column.grading_ratio", column.grading_ratio);
+    // generate_column's limit, named by the keys before any work (with the memory estimate
+    // ignored, nothing else stops such a column before the generator).
+    const std::int64_t cells = static_cast<std::int64_t>(column.nx) * column.ny * column.nz;
+    if (!problems.is_bad("mesh.column.nx") && !problems.is_bad("mesh.column.ny") &&
+        !problems.is_bad("mesh.column.nz") && cells > kMaxColumnCells) {
+      problems.bad_key("mesh.column.nx, mesh.column.ny, mesh.column.nz",
+                       std::to_string(column.nx) + " * " + std::to_string(column.ny) + " * " +
+                           std::to_string(column.nz) + " = " + std::to_string(cells) +
+                           " cells is more than the limit of " + std::to_string(kMaxColumnCells));
+    }
   }
 }
 

@@ -21,9 +21,6 @@ namespace biphasic {
 namespace {
 
 constexpr std::array<const char*, 2> kGradingFaces{"bottom", "top"};
-/// Most cells of a column (6 tets each: 6e8 tets, far beyond any machine's memory; it only
-/// keeps every count and index well inside 64-bit arithmetic).
-constexpr std::int64_t kMaxColumnCells = 100'000'000;
 
 void require_count(const char* what, int value) {
   if (value < 1)

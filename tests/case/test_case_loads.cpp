@@ -1,5 +1,9 @@
 // Case-file keys of the volume loads ([body_force], [fluid_source]).
 #include <gtest/gtest.h>
+#include <pthread.h>
+
+#include <functional>
+#include <string>
 
 #include "biphasic/io/case_file.hpp"
 #include "case_test_support.hpp"
@@ -63,6 +67,57 @@ TEST(CaseLoads, OverridesTakeFormulas) {
   EXPECT_EQ(c.loads.fluid_source(1.5, 0, 0, 0), 3.0);
   const auto problems = problems_of(kMinimalCase, {"body_force.z=sin("});
   EXPECT_TRUE(has_problem(problems, {"--set: body_force.z = \"sin(\": at character 5"}));
+}
+
+/// Runs `work` on a thread with a stack of `bytes` and waits for it: recursion as deep as a
+/// long formula overflows such a stack (and crashes the test), a loop does not.
+void run_on_small_stack(std::size_t bytes, const std::function<void()>& work) {
+  pthread_attr_t attr;
+  ASSERT_EQ(pthread_attr_init(&attr), 0);
+  ASSERT_EQ(pthread_attr_setstacksize(&attr, bytes), 0);
+  pthread_t thread;
+  auto call = [](void* w) -> void* {
+    (*static_cast<const std::function<void()>*>(w))();
+    return nullptr;
+  };
+  ASSERT_EQ(pthread_create(&thread, &attr, call, const_cast<std::function<void()>*>(&work)), 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+}
+
+/// "v+v+…+v" of `length` characters (odd), or of `length` − 1 and a trailing space (even).
+std::string flat_sum(char v, std::size_t length) {
+  std::string sum(1, v);
+  while (sum.size() + 2 <= length) sum += std::string("+") + v;
+  if (sum.size() < length) sum += " ";
+  return sum;
+}
+
+// Formulas up to the length limit (100 000 characters) are taken from a case file and work
+// without recursion: a 50 000-character "t+t+…" (a tree 25 000 levels deep) is read, evaluated
+// and differentiated in time (∂b/∂t, which the integrators use) exactly, on a 512 KiB stack. One
+// character more than the limit is refused naming the file, the key and the limit.
+TEST(CaseLoads, FormulasUpToTheLengthLimitWorkWithoutRecursionLongerOnesNameTheKey) {
+  run_on_small_stack(512 * 1024, [] {
+    const std::string sum = flat_sum('t', 50'000);
+    const Config c =
+        parse_case(kMinimalCase + "[body_force]\nz = \"" + sum + "\"\n", "cases/x.toml");
+    const Expression& b = c.loads.body_force[2];
+    EXPECT_EQ(b(0.0, 0.0, 0.0, 0.5), 12'500.0);
+    const Expression rate = b.derivative(Expression::Variable::T);
+    EXPECT_EQ(rate(0.0, 0.0, 0.0, 0.5), 25'000.0);
+    EXPECT_TRUE(rate.is_constant());
+    EXPECT_TRUE(b.derivative(Expression::Variable::X).is_zero());
+  });
+
+  const std::string at_limit = flat_sum('x', 100'000);
+  const Config c =
+      parse_case(kMinimalCase + "[body_force]\nx = \"" + at_limit + "\"\n", "cases/x.toml");
+  EXPECT_EQ(c.loads.body_force[0](2.0, 0.0, 0.0, 0.0), 100'000.0);  // 50 000 terms
+  const auto problems =
+      problems_of(kMinimalCase + "[body_force]\nx = \"" + flat_sum('x', 100'001) + "\"\n");
+  EXPECT_TRUE(has_problem(problems, {"cases/x.toml: body_force.x", "100001 characters",
+                                     "more than the limit of 100000"}));
 }
 
 }  // namespace

@@ -2,44 +2,20 @@
 // non-zero exit before any work starts.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
+#include <vector>
+
+#include "../common/run_binary.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
-/// Runs the binary with `args`; `env` ("NAME=value ...") is set for the command only.
-Result run(const std::string& args, const std::string& env = "") {
-  const std::string cmd =
-      (env.empty() ? "" : "env " + env + " ") + std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+using namespace biphasic::e2e;
 
 fs::path write_case(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("biphasic_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return write_text(scratch_dir("biphasic_cli") / name, text);
 }
 
 const char* kValid = R"(format_version = 1
@@ -116,11 +92,6 @@ TEST(Cli, BadOverrideIsReported) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("time.dt"), std::string::npos) << r.output;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // A generated mesh is cached by the first run and read back by the second (without gmsh), with

@@ -4,55 +4,24 @@
 // limit refused by `check` (exit 1) naming time.dt, time.t_end and the count.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+
+#include "../common/run_binary.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
+using namespace biphasic::e2e;
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-fs::path folder() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("biphasic_failed_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path folder() { return scratch_dir("biphasic_failed"); }
 
 fs::path write_case(const std::string& name, const std::string& text) {
-  const fs::path p = folder() / name;
-  std::ofstream(p) << text;
-  return p;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return write_text(folder() / name, text);
 }
 
 /// The times in line.csv's first column.

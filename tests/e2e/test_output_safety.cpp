@@ -4,45 +4,21 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
+
+#include "../common/run_binary.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
-/// Runs the binary with `args` in folder `cwd` (if given).
-Result run(const std::string& args, const fs::path& cwd = {}) {
-  const std::string cmd = (cwd.empty() ? "" : "cd " + cwd.string() + " && ") +
-                          std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using namespace biphasic::e2e;
 
 nlohmann::json read_summary(const fs::path& dir) {
   return nlohmann::json::parse(read_text(dir / "summary.json"));
@@ -87,22 +63,13 @@ reactions = ["bottom"]
 )";
 
 /// A fresh folder for one test, holding column.toml.
-struct Work {
-  explicit Work(const std::string& name)
-      : dir(fs::temp_directory_path() /
-            ("biphasic_out_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    std::ofstream(dir / "column.toml") << kColumn;
-  }
-  ~Work() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
+struct Work : FreshDir {
+  explicit Work(const std::string& name) : FreshDir("biphasic_out_" + name) {
+    write_text(dir / "column.toml", kColumn);
   }
   std::string run_args(const fs::path& out, const std::string& extra = "") const {
     return "run " + (dir / "column.toml").string() + " -o " + out.string() + " --quiet " + extra;
   }
-  fs::path dir;
 };
 
 TEST(OutputSafety, TheColumnRunCompletes) {
@@ -187,8 +154,8 @@ TEST(OutputSafety, AnEarlierRunIsRefusedOrReplacedAsAWhole) {
 
 TEST(OutputSafety, TheDefaultFolderNamesTheOverrides) {
   const Work w("default");
-  ASSERT_EQ(run("run column.toml --quiet", w.dir).status, 0);
-  const Result r = run("run column.toml --quiet --set time.dt=2.0", w.dir);
+  ASSERT_EQ(run("run column.toml --quiet", "", w.dir).status, 0);
+  const Result r = run("run column.toml --quiet --set time.dt=2.0", "", w.dir);
   ASSERT_EQ(r.status, 0) << r.output;
   const fs::path with = w.dir / "results" / "column--time.dt=2.0";
   ASSERT_TRUE(fs::exists(with / "summary.json"));

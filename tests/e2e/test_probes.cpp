@@ -3,12 +3,8 @@
 // `check`, and output.line = false on a line that would not fit.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,38 +14,18 @@
 #include <string>
 #include <vector>
 
+#include "../common/run_binary.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
+using namespace biphasic::e2e;
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-fs::path folder() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("biphasic_probes_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path folder() { return scratch_dir("biphasic_probes"); }
 
 fs::path write_case(const std::string& name, const std::string& text) {
-  const fs::path p = folder() / name;
-  std::ofstream(p) << text;
-  return p;
+  return write_text(folder() / name, text);
 }
 
 // The paper's scene on a coarse unstructured mesh, two steps: the top pushed down 0.02 mm,
@@ -111,11 +87,6 @@ std::map<double, std::vector<std::array<double, 8>>> read_csv(const fs::path& pa
     rows[t].push_back(v);
   }
   return rows;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 nlohmann::json summary_of(const fs::path& dir) {

@@ -9,18 +9,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "../common/run_binary.hpp"
 #include "biphasic/io/checkpoint.hpp"
 
 extern char** environ;
@@ -29,27 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using namespace biphasic::e2e;
 
 /// The rows of a CSV file as numbers (non-numeric fields, e.g. boundary names, as NaN).
 std::vector<std::vector<double>> read_rows(const fs::path& path) {
@@ -129,20 +108,11 @@ line_end = [0, 0, 1]
 reactions = ["bottom"]
 )";
 
-struct Work {
-  explicit Work(const std::string& name)
-      : dir(fs::temp_directory_path() /
-            ("biphasic_restart_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    std::ofstream(dir / "column.toml") << kColumn;
-  }
-  ~Work() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
+struct Work : FreshDir {
+  explicit Work(const std::string& name) : FreshDir("biphasic_restart_" + name) {
+    write_text(dir / "column.toml", kColumn);
   }
   std::string case_file() const { return (dir / "column.toml").string(); }
-  fs::path dir;
 };
 
 /// Output step of the checkpoint in `out`, or -1 while there is none.

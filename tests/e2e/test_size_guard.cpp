@@ -4,43 +4,24 @@
 // the estimate; `check` reports the estimate of a valid case; a huge OMP_NUM_THREADS is
 // clamped instead of crashing the OpenMP runtime.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "../common/run_binary.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& args, const std::string& env = "") {
-  const std::string cmd =
-      (env.empty() ? "" : "env " + env + " ") + std::string(BIPHASIC_BINARY) + " " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+using namespace biphasic::e2e;
 
 class SizeGuard : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("biphasic_size_guard_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
+    dir_ = scratch_dir("biphasic_size_guard");
     case_ = (dir_ / "case.toml").string();
     // Held in z only (free rigid modes allowed) and without a probe line: the size guard is
     // what these tests are about, not the constraints or the probes.
@@ -87,6 +68,28 @@ TEST_F(SizeGuard, MeshesTooLargeForTheMachineAreRefusedBeforeMeshing) {
       EXPECT_LT(seconds, 10.0) << command << " " << c.overrides;  // refused, not meshed
       EXPECT_FALSE(fs::exists(dir_ / "out" / "summary.json"));
     }
+  }
+}
+
+// A column beyond the generator's limit of 10^8 cells is bad input even with the memory
+// estimate overridden: exit 1 before any work (no allocation, no output folder), naming the
+// case, the keys, the counts and the limit.
+TEST_F(SizeGuard, ColumnsBeyondTheCellLimitAreRefusedEvenWithTheEstimateIgnored) {
+  for (const char* command : {"run", "check"}) {
+    double seconds = 0.0;
+    const Result r = timed(command,
+                           "--set mesh.source=column --set mesh.column.nx=1000 "
+                           "--set mesh.column.ny=1000 --set mesh.column.nz=101 "
+                           "--set mesh.ignore_memory_estimate=true",
+                           seconds);
+    EXPECT_EQ(r.status, 1) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find(case_ + ": mesh.column.nx, mesh.column.ny, mesh.column.nz: 1000 * "
+                                    "1000 * 101 = 101000000 cells is more than the limit of "
+                                    "100000000"),
+              std::string::npos)
+        << r.output;
+    EXPECT_LT(seconds, 10.0) << command;
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
   }
 }
 

@@ -3,11 +3,17 @@
 // positive integer.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
+#include <cstdlib>
+#include <string>
+
 #include "biphasic/assembly/threads.hpp"
 
 namespace {
 
 using biphasic::kMaxThreadsPerProcessor;
+using biphasic::worker_threads;
 using biphasic::worker_threads_for;
 
 TEST(WorkerThreads, PositiveCountsWithinTheBoundAreUsedAsGiven) {
@@ -29,6 +35,40 @@ TEST(WorkerThreads, UnsetOrInvalidValuesGiveTheProcessorCount) {
   EXPECT_EQ(worker_threads_for("0", 6), 6);
   EXPECT_EQ(worker_threads_for("-4", 6), 6);
   EXPECT_EQ(worker_threads_for("4", 0), 4);  // no processor count known: at least one
+}
+
+// worker_threads() reads OMP_NUM_THREADS itself: a huge value is clamped to
+// kMaxThreadsPerProcessor per processor, with a note on stderr naming the value, and the clamped
+// count becomes the OpenMP default. (No parallel region here: unclamped, it would start a million
+// threads.)
+TEST(WorkerThreads, AHugeEnvironmentValueIsClampedWithANoteAndBecomesTheDefault) {
+  const char* before = std::getenv("OMP_NUM_THREADS");
+  const std::string saved = before ? before : "";
+  const int bound = kMaxThreadsPerProcessor * omp_get_num_procs();
+  ASSERT_EQ(::setenv("OMP_NUM_THREADS", "1000000", 1), 0);
+  ::testing::internal::CaptureStderr();
+  const int threads = worker_threads();
+  const std::string note = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(threads, bound);
+  EXPECT_EQ(omp_get_max_threads(), bound);
+  EXPECT_NE(note.find("OMP_NUM_THREADS=1000000 is more than " +
+                      std::to_string(kMaxThreadsPerProcessor) + " threads per processor"),
+            std::string::npos)
+      << note;
+  EXPECT_NE(note.find("using " + std::to_string(bound) + " threads"), std::string::npos) << note;
+
+  // A count within the bound is used as given, silently.
+  ASSERT_EQ(::setenv("OMP_NUM_THREADS", "1", 1), 0);
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(worker_threads(), 1);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(omp_get_max_threads(), 1);
+
+  if (before)
+    ::setenv("OMP_NUM_THREADS", saved.c_str(), 1);
+  else
+    ::unsetenv("OMP_NUM_THREADS");
+  worker_threads();
 }
 
 }  // namespace

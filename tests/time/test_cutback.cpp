@@ -11,69 +11,19 @@
 #include <filesystem>
 
 #include "biphasic/app/run.hpp"
-#include "biphasic/io/case_file.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/time/backward_euler.hpp"
+#include "column_case.hpp"
 
 namespace biphasic {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// 1 × 1 × 1 mm column, 4 layers, top pushed down by `value` over the first second (then held),
-/// drained top, sealed elsewhere; dt = 1 s, outputs at 1, 2, 3, 4 s.
-const char* kCase = R"(
-format_version = 1
-[mesh]
-source = "column"
-[mesh.column]
-width = 1.0
-depth = 1.0
-height = 1.0
-nx = 1
-ny = 1
-nz = 4
-[material]
-lambda = 0.2
-mu = 0.5
-permeability = 1e-2
-[curves]
-ramp = [[0.0, 0.0], [1.0, 1.0]]
-[[boundary]]
-name = "top"
-type = "displacement"
-component = "z"
-value = -0.12
-curve = "ramp"
-[[boundary]]
-name = "top"
-type = "pressure"
-value = 0.0
-[[boundary]]
-name = "bottom"
-type = "displacement"
-component = "z"
-value = 0.0
-[[boundary]]
-name = "x0"
-type = "symmetry"
-[[boundary]]
-name = "y0"
-type = "symmetry"
-[time]
-t_end = 4.0
-dt = 1.0
-[linear_solver]
-type = "klu"
-ordering = "amd"
-[output]
-line_start = [0.0, 0.0, 0.0]
-line_end = [0.0, 0.0, 1.0]
-fields = false
-)";
-
+/// The shared column (column_case.hpp), its top pushed down 12 %, with a probe line on its axis.
 Config config(const std::vector<std::string>& overrides = {}) {
-  return parse_case(kCase, "cutback.toml", overrides, ".");
+  return column_case::config("-0.12", "cutback.toml", overrides,
+                             "line_start = [0.0, 0.0, 0.0]\nline_end = [0.0, 0.0, 1.0]\n");
 }
 
 struct Output {
@@ -93,10 +43,7 @@ Record integrate(const Mesh& mesh, const Config& cfg, double t0, std::vector<dou
   BackwardEuler be(problem, cfg.time, cfg.linear_solver);
   Record run;
   be.set_log([&](const std::string& line) { run.log.push_back(line); });
-  if (y.empty()) {
-    y.assign(problem.size(), 0.0);
-    problem.apply_dirichlet(t0, y.data(), nullptr);
-  }
+  if (y.empty()) y = column_case::rest_state(problem, t0);
   be.run(t0, y,
          [&](const StepInfo& info, const std::vector<double>& ys, const std::vector<double>&) {
            run.outputs.push_back({info, ys});

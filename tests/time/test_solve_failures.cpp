@@ -6,66 +6,28 @@
 #include <ida/ida.h>
 #include <kinsol/kinsol.h>
 
+#include <algorithm>
+#include <functional>
 #include <limits>
+#include <map>
+#include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
-#include "biphasic/io/case_file.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 #include "biphasic/time/solver_messages.hpp"
+#include "column_case.hpp"
 
 namespace biphasic {
 namespace {
 
-/// 1 × 1 × 1 mm confined column, 4 layers, drained top pushed down 5 % over the first second,
-/// then held; outputs every second to t = 4 s.
-const char* kCase = R"(
-format_version = 1
-[mesh]
-source = "column"
-[mesh.column]
-nz = 4
-[material]
-lambda = 0.2
-mu = 0.5
-permeability = 1e-2
-[curves]
-ramp = [[0.0, 0.0], [1.0, 1.0]]
-[[boundary]]
-name = "top"
-type = "displacement"
-component = "z"
-value = -0.05
-curve = "ramp"
-[[boundary]]
-name = "top"
-type = "pressure"
-value = 0.0
-[[boundary]]
-name = "bottom"
-type = "displacement"
-component = "z"
-value = 0.0
-[[boundary]]
-name = "x0"
-type = "symmetry"
-[[boundary]]
-name = "y0"
-type = "symmetry"
-[time]
-t_end = 4.0
-dt = 1.0
-[linear_solver]
-type = "klu"
-ordering = "amd"
-[output]
-fields = false
-)";
-
+/// The shared column (column_case.hpp), its top pushed down 5 %.
 Config config(const std::vector<std::string>& overrides = {}) {
-  return parse_case(kCase, "failures.toml", overrides, ".");
+  return column_case::config("-0.05", "failures.toml", overrides);
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -115,8 +77,7 @@ TEST(NewtonTolerance, DefaultToleranceSolvesEveryStep) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BackwardEuler be(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   int loaded_steps = 0;
   be.run(0.0, y, [&](const StepInfo& info, const std::vector<double>& ys, auto&) {
     if (info.step == 1) {
@@ -137,8 +98,7 @@ TEST(BdfMaxSteps, TinyLimitStopsTheRunWithAClearMessage) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   try {
     bdf.run(0.0, y, nullptr);
     FAIL() << "ran with at most 3 internal steps per output";
@@ -156,8 +116,7 @@ TEST(BdfMaxSteps, EnoughStepsRunToTheEnd) {
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
   BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
-  std::vector<double> y(problem.size(), 0.0);
-  problem.apply_dirichlet(0.0, y.data(), nullptr);
+  std::vector<double> y = column_case::rest_state(problem);
   int outputs = 0;
   bdf.run(0.0, y, [&](const StepInfo& info, auto&, auto&) {
     EXPECT_LE(info.internal_steps, 500);
@@ -178,6 +137,97 @@ TEST(Callbacks, EveryExceptionIsCaughtStoredAndFlagged) {
   EXPECT_FALSE(failure.empty());
   EXPECT_EQ(guarded_callback(failure, [] { throw 42; }), -1);
   EXPECT_EQ(failure.message, "an exception of unknown type");
+}
+
+/// A body force that cannot be evaluated after t = 1.5 s: a std::runtime_error, not an
+/// inverted element (zero before).
+VectorField body_force_failing_after_1_5_s() {
+  return [](const Vec3&, double t) -> Vec3 {
+    if (t > 1.5) throw std::runtime_error("the body force table ends at t = 1.5 s");
+    return Vec3::Zero();
+  };
+}
+
+/// Runs `integrator` on `problem` from rest, expecting a StepFailure; returns its message and
+/// the output times the observer saw before it.
+template <class Integrator>
+std::pair<std::string, std::set<double>> failed_run(Integrator& integrator,
+                                                    const BiphasicProblem& problem) {
+  std::set<double> outputs;
+  std::vector<double> y = column_case::rest_state(problem);
+  try {
+    integrator.run(0.0, y, [&](const StepInfo& info, auto&, auto&) { outputs.insert(info.t); });
+  } catch (const StepFailure& e) {
+    return {e.what(), outputs};
+  }
+  ADD_FAILURE() << "the run completed";
+  return {"", outputs};
+}
+
+/// Runs backward Euler (up to 4 cut-backs, the default) on the column after `spoil` has made
+/// some of the problem's data fail; expects it to stop at once in step 2 (t = 2 s): no
+/// cut-back, the message naming the step, its time and step size and `causes`, and the output
+/// at t = 1 s delivered before.
+void expect_backward_euler_stops_in_step_2(const std::function<void(BiphasicProblem&)>& spoil,
+                                           const std::vector<std::string>& causes) {
+  const Config cfg = config();
+  ASSERT_EQ(cfg.time.newton.max_cutbacks, 4);
+  const Mesh mesh = generate_column(cfg.mesh.column);
+  BiphasicProblem problem(mesh, cfg);
+  spoil(problem);
+  BackwardEuler be(problem, cfg.time, cfg.linear_solver);
+  const auto [what, outputs] = failed_run(be, problem);
+  EXPECT_TRUE(contains(what, "backward Euler step 2 (t = 2 s, dt = 1 s) failed: ")) << what;
+  for (const std::string& cause : causes) EXPECT_TRUE(contains(what, cause)) << what;
+  EXPECT_TRUE(be.stats().cutbacks.empty()) << be.stats().cutbacks.size() << " cut-backs";
+  EXPECT_EQ(outputs, (std::set<double>{1.0}));
+}
+
+// An exception other than an inverted element while evaluating the residual stops backward
+// Euler at once (the same evaluation would fail again after a cut-back), naming step, time and
+// cause in words. Here the body force of the step's first trial state throws.
+TEST(CallbackFailure, BackwardEulerStopsWithoutCutbacksNamingStepTimeAndCause) {
+  expect_backward_euler_stops_in_step_2(
+      [](BiphasicProblem& problem) { problem.set_body_force(body_force_failing_after_1_5_s()); },
+      {"the residual could not be evaluated", "the body force table ends at t = 1.5 s"});
+}
+
+// The same inside KINSOL's residual callback (guarded_callback: no exception crosses SUNDIALS'
+// C frames; any but an inverted element is unrecoverable). The boundary values come from a
+// field that throws from its third evaluation at a node and time after t = 1.5 s: backward
+// Euler evaluates them twice before Newton (the trial state and its residual), so the
+// exception is raised within KINSol.
+TEST(CallbackFailure, BackwardEulerStopsOnAnExceptionInsideTheNewtonIteration) {
+  expect_backward_euler_stops_in_step_2(
+      [](BiphasicProblem& problem) {
+        auto evaluations =
+            std::make_shared<std::map<std::tuple<double, double, double, double>, int>>();
+        problem.set_dirichlet_fields(
+            [evaluations](const Vec3& X, double t) -> Vec3 {
+              if (t > 1.5 && ++(*evaluations)[{X(0), X(1), X(2), t}] >= 3)
+                throw std::runtime_error("the boundary data ends at t = 1.5 s");
+              // The case's own values: the top pushed down 0.05 mm along the ramp.
+              return {0.0, 0.0, X(2) == 1.0 ? -0.05 * std::min(t, 1.0) : 0.0};
+            },
+            {}, [](const Vec3&, double) -> Vec3 { return Vec3::Zero(); });
+      },
+      {"the residual could not be evaluated (KIN_", "the boundary data ends at t = 1.5 s"});
+}
+
+// BDF: the exception inside IDA's residual callback ends the run in the output interval where it
+// occurred, naming it, the internal step, t, h and the cause; the output before it delivered.
+TEST(CallbackFailure, BdfStopsNamingOutputStepTimeStepSizeAndCause) {
+  const Config cfg = config({"time.integrator=\"bdf\""});
+  const Mesh mesh = generate_column(cfg.mesh.column);
+  BiphasicProblem problem(mesh, cfg);
+  problem.set_body_force(body_force_failing_after_1_5_s());
+  BdfIntegrator bdf(problem, cfg.time, cfg.linear_solver);
+  const auto [what, outputs] = failed_run(bdf, problem);
+  EXPECT_TRUE(contains(what, "BDF output step 2 (towards t = 2 s): internal step ")) << what;
+  EXPECT_TRUE(contains(what, " from t = ")) << what;
+  EXPECT_TRUE(contains(what, "h = ")) << what;
+  EXPECT_TRUE(contains(what, "(IDA_RES_FAIL): the body force table ends at t = 1.5 s")) << what;
+  EXPECT_EQ(outputs, (std::set<double>{1.0}));
 }
 
 // Every flag KINSol and IDASolve can return reads as a sentence with the flag's name.

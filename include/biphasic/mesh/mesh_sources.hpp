@@ -2,6 +2,7 @@
 // .msh file.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,10 @@ struct ColumnSpec {
   /// nz ≥ 2 when grading toward one face, nz ≥ 3 toward both.
   double grading_ratio = 1.0;
 };
+
+/// Most cells (nx · ny · nz) of a column: 6e8 tets, far beyond any machine's memory; it only
+/// keeps every count and index well inside 64-bit arithmetic.
+inline constexpr std::int64_t kMaxColumnCells = 100'000'000;
 
 /// z [mm] of the nz + 1 layer interfaces of the column: layer k spans [z_k, z_{k+1}],
 /// z_0 = 0, z_nz = height exactly, and z_k = height · S_k / S_nz with S_k = Σ_{j<k} h_j and
