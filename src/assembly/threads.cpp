@@ -14,8 +14,9 @@ int worker_threads_for(const char* omp_num_threads, int processors) {
   char* end = nullptr;
   errno = 0;
   const long requested = std::strtol(omp_num_threads, &end, 10);
-  if (end == omp_num_threads || errno == ERANGE || requested <= 0) return available;
   const long bound = static_cast<long>(kMaxThreadsPerProcessor) * available;
+  if (errno == ERANGE && requested > 0) return static_cast<int>(bound);  // beyond long: clamped
+  if (end == omp_num_threads || errno == ERANGE || requested <= 0) return available;
   return static_cast<int>(requested < bound ? requested : bound);
 }
 

@@ -789,12 +789,15 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
                         column.grading_faces, "mesh.column.grading_ratio", column.grading_ratio);
     // generate_column's limit, named by the keys before any work (with the memory estimate
     // ignored, nothing else stops such a column before the generator).
-    const std::int64_t cells = static_cast<std::int64_t>(column.nx) * column.ny * column.nz;
+    // In double: three counts up to 2^31 each would overflow 64 bits.
+    const double cells = static_cast<double>(column.nx) * column.ny * column.nz;
     if (!problems.is_bad("mesh.column.nx") && !problems.is_bad("mesh.column.ny") &&
-        !problems.is_bad("mesh.column.nz") && cells > kMaxColumnCells) {
+        !problems.is_bad("mesh.column.nz") && cells > static_cast<double>(kMaxColumnCells)) {
+      char count[32];
+      std::snprintf(count, sizeof count, "%.0f", cells);
       problems.bad_key("mesh.column.nx, mesh.column.ny, mesh.column.nz",
                        std::to_string(column.nx) + " * " + std::to_string(column.ny) + " * " +
-                           std::to_string(column.nz) + " = " + std::to_string(cells) +
+                           std::to_string(column.nz) + " = " + count +
                            " cells is more than the limit of " + std::to_string(kMaxColumnCells));
     }
   }

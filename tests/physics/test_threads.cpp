@@ -24,7 +24,8 @@ TEST(WorkerThreads, PositiveCountsWithinTheBoundAreUsedAsGiven) {
 
 TEST(WorkerThreads, HugeCountsAreClampedToThreadsPerProcessor) {
   EXPECT_EQ(worker_threads_for("1000000", 2), 2 * kMaxThreadsPerProcessor);
-  EXPECT_EQ(worker_threads_for("99999999999999999999999", 2), 2);  // out of range: ignored
+  // Beyond a long: as large as it gets, so clamped like any other large request.
+  EXPECT_EQ(worker_threads_for("99999999999999999999999", 2), 2 * kMaxThreadsPerProcessor);
   EXPECT_EQ(worker_threads_for("2147483647", 16), 16 * kMaxThreadsPerProcessor);
 }
 

@@ -15,8 +15,9 @@ inline constexpr int kMaxThreadsPerProcessor = 4;
 int worker_threads();
 
 /// The thread count for an OMP_NUM_THREADS value (nullptr: unset) on `processors`
-/// processors: a positive integer is used up to kMaxThreadsPerProcessor × processors;
-/// anything else (empty, not a number, ≤ 0, out of range) gives `processors`.
+/// processors: a positive integer is used up to kMaxThreadsPerProcessor × processors (one
+/// beyond the range of long is clamped there too); anything else (empty, not a number, ≤ 0)
+/// gives `processors`.
 int worker_threads_for(const char* omp_num_threads, int processors);
 
 }  // namespace biphasic
