@@ -141,7 +141,7 @@ class BiphasicProblem {
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const;
 
-  /// Oedometric modulus H_A = λ + 2μ of the solid [MPa].
+  /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa].
   double oedometric_modulus() const { return laws_.p_wave_modulus(); }
   bool has_gls() const { return !gls_c_.empty(); }
   bool has_flux_perturbation() const { return !flux_beta_.empty(); }
