@@ -228,8 +228,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     double c_max = 0.0;
     for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
       c_max = std::max(c_max, problem.gls_coefficient(e));
-    const double ratio =
-        c_max / config.time.dt / (config.material.lambda + 2.0 * config.material.mu);
+    const double ratio = c_max / config.time.dt / problem.oedometric_modulus();
     summary["gls_penalty_ratio"] = ratio;
     const bool bdf = uses_ida(config.time.integrator);
     if (ratio > 5.0 || bdf) {

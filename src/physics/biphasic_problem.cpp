@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 
 #include "biphasic/assembly/colouring.hpp"
 #include "biphasic/assembly/threads.hpp"
@@ -100,9 +101,9 @@ double largest_value(const BoundaryCondition& bc, const std::map<std::string, Lo
   return scale * m;
 }
 
-/// The solution's displacement [mm] and pressure [MPa] scales implied by the boundary data.
-std::pair<double, double> data_scales(const Mesh& mesh, const Config& config) {
-  const double HA = config.material.lambda + 2.0 * config.material.mu;
+/// The solution's displacement [mm] and pressure [MPa] scales implied by the boundary data and
+/// the solid's P-wave modulus HA [MPa].
+std::pair<double, double> data_scales(const Mesh& mesh, const Config& config, double HA) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   for (const auto& x : mesh.nodes)
     for (int c = 0; c < 3; ++c) {
@@ -137,10 +138,11 @@ std::pair<double, double> data_scales(const Mesh& mesh, const Config& config) {
 }  // namespace
 
 BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
-    : mesh_(mesh), curves_(config.curves), pattern_(mesh), colours_(colour_elements(mesh)) {
-  params_.material = {config.material.lambda, config.material.mu};
-  params_.permeability = config.material.permeability;
-
+    : mesh_(mesh),
+      curves_(config.curves),
+      laws_(make_material_laws(config.material)),
+      pattern_(mesh),
+      colours_(colour_elements(mesh)) {
   // Reference geometry per element and quadrature point; GLS coefficients.
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
   for (const QuadraturePoint& qp : rule.points) point_p2_.push_back(p2_values(qp.xi));
@@ -149,7 +151,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   const bool flux = config.stabilisation.type == Stabilisation::FluxPerturbation;
   if (gls) gls_c_.resize(mesh.tets.size());
   if (flux) flux_beta_.resize(mesh.tets.size());
-  const double HA = config.material.lambda + 2.0 * config.material.mu;
+  const double HA = laws_.p_wave_modulus();
+  const double k_ref = laws_.reference_permeability();
   double mean_length = 0.0;
   for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
     Eigen::Matrix<double, 10, 3> X;
@@ -164,13 +167,13 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     if (gls || flux) {
       const double h = element_length(x, config.stabilisation.length);
       const double h2 = config.stabilisation.scale * h * h;
-      if (gls) gls_c_[e] = h2 / (4.0 * config.material.permeability);
+      if (gls) gls_c_[e] = h2 / (4.0 * k_ref);
       if (flux) flux_beta_[e] = h2 / (4.0 * HA);
     }
   }
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
   row_scale_u_ = HA * mean_length;
-  row_scale_p_ = config.material.permeability * mean_length;
+  row_scale_p_ = k_ref * mean_length;
 
   // Boundary conditions by physical-group name.
   constrained_.assign(pattern_.size(), 0);
@@ -279,7 +282,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       }
     }
   }
-  solution_scales_ = data_scales(mesh, config);
+  solution_scales_ = data_scales(mesh, config, laws_.p_wave_modulus());
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -425,11 +428,13 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
                               ElementOutput& out) const {
   ElementVector ye, ydote;
   gather(e, y, ydot, ye, ydote);
-  ElementParameters p = params_;
-  p.gls_c = gls_coefficient(e);
-  p.flux_beta = flux_perturbation(e);
+  const ElementCoefficients c{gls_coefficient(e), flux_perturbation(e), volume_rate_dt_};
   try {
-    biphasic_element(geometry_[e], p, ye, ydote, with_jacobian, out);
+    std::visit(
+        [&](const auto& solid, const auto& permeability) {
+          biphasic_element(geometry_[e], solid, permeability, c, ye, ydote, with_jacobian, out);
+        },
+        laws_.solid, laws_.permeability);
   } catch (const std::domain_error& err) {
     throw InvertedElement("element " + std::to_string(e) + ": " + err.what());
   }
@@ -584,7 +589,7 @@ void BiphasicProblem::set_conservative_volume_rate(double dt) {
   if (!(dt >= 0.0) || !std::isfinite(dt))
     throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
                                 " s must be >= 0 and finite");
-  params_.volume_rate_dt = dt;
+  volume_rate_dt_ = dt;
 }
 
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
@@ -642,7 +647,7 @@ double BiphasicProblem::gls_time_scale() const {
 
 void BiphasicProblem::pressure_schur_term(double cj, double cj_gls,
                                           std::vector<PressureEntry>& out) const {
-  const double modulus = params_.material.lambda + 2.0 * params_.material.mu;
+  const double modulus = oedometric_modulus();
   out.reserve(out.size() + 16 * mesh_.tets.size());
   for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
     double volume = 0.0;

@@ -1,5 +1,6 @@
 #include "biphasic/study/oscillation_advisor.hpp"
 
+#include "biphasic/material/material_laws.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 #include <algorithm>
@@ -99,8 +100,8 @@ std::vector<double> heights_over_boundary(const Mesh& mesh, const std::string& b
 
 OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
   OscillationAdvice advice;
-  const double c =
-      config.material.permeability * (config.material.lambda + 2.0 * config.material.mu);
+  const MaterialLaws laws = make_material_laws(config.material);
+  const double c = laws.reference_permeability() * laws.p_wave_modulus();
   advice.consolidation_coefficient = c;
   advice.bdf = uses_ida(config.time.integrator);
   advice.stabilisation = to_name(config.stabilisation.type);

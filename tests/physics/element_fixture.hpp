@@ -4,7 +4,9 @@
 #include <random>
 #include <vector>
 
+#include "biphasic/fe/quadrature.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
+#include "biphasic/physics/element_geometry.hpp"
 
 namespace biphasic::test {
 
@@ -19,6 +21,13 @@ inline Eigen::Matrix<double, 10, 3> distorted_tet() {
   X(5, 2) += 0.03;  // curve one edge
   X(8, 0) -= 0.02;
   return X;
+}
+
+/// Reference geometry of distorted_tet() at the points of the 4-point rule.
+inline std::vector<PointGeometry> distorted_tet_geometry() {
+  std::vector<PointGeometry> geo;
+  element_point_geometry(distorted_tet(), tet_quadrature(4), geo);
+  return geo;
 }
 
 /// A random state with strains of order `amplitude`, pressures of order 0.1 MPa.

@@ -14,6 +14,7 @@
 #include "biphasic/assembly/sparsity.hpp"
 #include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/material/material_laws.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
 
 namespace biphasic {
@@ -140,8 +141,8 @@ class BiphasicProblem {
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const;
 
-  /// Oedometric modulus H_A = λ + 2μ of the solid [MPa].
-  double oedometric_modulus() const { return params_.material.lambda + 2.0 * params_.material.mu; }
+  /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa].
+  double oedometric_modulus() const { return laws_.p_wave_modulus(); }
   bool has_gls() const { return !gls_c_.empty(); }
   bool has_flux_perturbation() const { return !flux_beta_.empty(); }
   /// Smallest GLS relaxation time min_e c_e / H_A over the elements [s] (0 without GLS).
@@ -204,7 +205,8 @@ class BiphasicProblem {
 
   const Mesh& mesh_;
   std::map<std::string, LoadCurve> curves_;
-  ElementParameters params_;
+  MaterialLaws laws_;
+  double volume_rate_dt_ = 0.0;  ///< ElementCoefficients::volume_rate_dt [s]
   std::vector<std::vector<PointGeometry>> geometry_;
   std::vector<Eigen::Matrix<double, 10, 1>> point_p2_;  ///< P2 values at the rule's points
   VolumeLoads loads_;

@@ -1,0 +1,159 @@
+// The material-law layer: the registry, the Neo-Hookean point response, and the dk/dJ part of
+// the element Jacobian, checked with a test-only permeability law whose derivative is not zero.
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+
+#include "biphasic/material/material_laws.hpp"
+#include "element_fixture.hpp"
+
+namespace biphasic {
+namespace {
+
+/// Test-only law k(J) = k₀ J², dk/dJ = 2 k₀ J [mm⁴ N⁻¹ s⁻¹].
+struct QuadraticPermeability {
+  double k0 = 1e-2;
+  double permeability(double J) const { return k0 * J * J; }
+  double permeability_derivative(double J) const { return 2.0 * k0 * J; }
+};
+static_assert(PermeabilityLaw<QuadraticPermeability>);
+
+/// The same k(J) with the derivative left out: its Jacobian must fail the check below.
+struct QuadraticPermeabilityWithoutDerivative : QuadraticPermeability {
+  double permeability_derivative(double /*J*/) const { return 0.0; }
+};
+
+struct Block {
+  const char* name;
+  int r0, nr, c0, nc;
+};
+const Block kBlocks[] = {
+    {"u-u", 0, 30, 0, 30}, {"u-p", 0, 30, 30, 4}, {"p-u", 30, 4, 0, 30}, {"p-p", 30, 4, 30, 4}};
+
+/// Relative error per block of the Jacobian ∂R/∂y of `Law` against central differences with
+/// steps ε and ε/2.
+template <class Law>
+std::vector<std::pair<double, double>> block_errors(const Law& law, const ElementCoefficients& c) {
+  const std::vector<PointGeometry> geo = test::distorted_tet_geometry();
+  const NeoHookean solid{0.2, 0.5};
+  ElementVector y, ydot;
+  test::random_state(7, 0.08, y, ydot);
+  ElementOutput exact, plus, minus;
+  biphasic_element(geo, solid, law, c, y, ydot, true, exact);
+  auto difference = [&](double eps) {
+    ElementMatrix D;
+    for (int j = 0; j < kElementDofs; ++j) {
+      ElementVector yp = y, ym = y;
+      yp(j) += eps;
+      ym(j) -= eps;
+      biphasic_element(geo, solid, law, c, yp, ydot, false, plus);
+      biphasic_element(geo, solid, law, c, ym, ydot, false, minus);
+      D.col(j) = (plus.residual - minus.residual) / (2.0 * eps);
+    }
+    return ElementMatrix(D - exact.dfdy);
+  };
+  const ElementMatrix E1 = difference(1e-3), E2 = difference(5e-4);
+  std::vector<std::pair<double, double>> errors;
+  for (const Block& b : kBlocks) {
+    const double scale = std::max(1e-12, exact.dfdy.block(b.r0, b.c0, b.nr, b.nc).norm());
+    errors.emplace_back(E1.block(b.r0, b.c0, b.nr, b.nc).norm() / scale,
+                        E2.block(b.r0, b.c0, b.nr, b.nc).norm() / scale);
+  }
+  return errors;
+}
+
+/// Stabilisation and volume-rate coefficients of one case, with a name for the test list.
+struct Coefficients {
+  ElementCoefficients c;
+  const char* name;
+  friend void PrintTo(const Coefficients& x, std::ostream* os) { *os << x.name; }
+};
+class PermeabilityDerivative : public ::testing::TestWithParam<Coefficients> {};
+
+// Every block converges as ε² (ratio ≈ 4 per halving) or is at round-off.
+TEST_P(PermeabilityDerivative, JacobianMatchesCentralDifferencesBlockByBlock) {
+  const auto errors = block_errors(QuadraticPermeability{}, GetParam().c);
+  for (std::size_t n = 0; n < errors.size(); ++n) {
+    const auto [e1, e2] = errors[n];
+    EXPECT_LT(e2, 1e-5) << kBlocks[n].name;
+    if (e1 > 1e-9) {
+      EXPECT_NEAR(e1 / e2, 4.0, 0.4) << kBlocks[n].name << " e1=" << e1 << " e2=" << e2;
+    }
+  }
+}
+
+// Without the dk/dJ term the p-u block is wrong at O(1): the check above can see it.
+TEST_P(PermeabilityDerivative, MissingDerivativeIsDetected) {
+  const auto errors = block_errors(QuadraticPermeabilityWithoutDerivative{}, GetParam().c);
+  EXPECT_GT(errors[2].second, 1e-3);  // p-u
+  EXPECT_LT(errors[3].second, 1e-5);  // p-p does not involve dk/dJ
+}
+
+INSTANTIATE_TEST_SUITE_P(Stabilisations, PermeabilityDerivative,
+                         ::testing::Values(Coefficients{{0.0, 0.0, 0.0}, "plain"},
+                                           Coefficients{{2.5, 0.0, 0.0}, "gls"},
+                                           Coefficients{{0.0, 0.35, 0.0}, "flux_perturbation"},
+                                           Coefficients{{2.5, 0.0, 5.0}, "gls_conservative"}),
+                         [](const auto& param_info) { return param_info.param.name; });
+
+TEST(MaterialLaws, ConstantPermeabilityIsConstant) {
+  const ConstantPermeability k{3e-3};
+  EXPECT_EQ(k.permeability(0.7), 3e-3);
+  EXPECT_EQ(k.permeability(1.4), 3e-3);
+  EXPECT_EQ(k.permeability_derivative(0.7), 0.0);
+}
+
+TEST(MaterialLaws, RegistryBuildsTheCaseMaterial) {
+  const MaterialLaws laws = make_material_laws(MaterialConfig{0.2, 0.5, 2e-3});
+  ASSERT_TRUE(std::holds_alternative<NeoHookean>(laws.solid));
+  EXPECT_EQ(std::get<NeoHookean>(laws.solid).lambda, 0.2);
+  EXPECT_EQ(std::get<NeoHookean>(laws.solid).mu, 0.5);
+  EXPECT_DOUBLE_EQ(laws.p_wave_modulus(), 1.2);
+  EXPECT_EQ(laws.reference_permeability(), 2e-3);
+}
+
+// The templated kernel with the laws equals the ElementParameters form, bit for bit.
+TEST(MaterialLaws, ParameterFormCallsTheLaws) {
+  const std::vector<PointGeometry> geo = test::distorted_tet_geometry();
+  ElementParameters p;
+  p.material = {0.3, 0.4};
+  p.permeability = 4e-3;
+  p.gls_c = 1.5;
+  ElementVector y, ydot;
+  test::random_state(3, 0.05, y, ydot);
+  ElementOutput a, b;
+  biphasic_element(geo, p, y, ydot, true, a);
+  biphasic_element(geo, p.material, ConstantPermeability{4e-3}, p, y, ydot, true, b);
+  EXPECT_EQ(a.residual, b.residual);
+  EXPECT_EQ(a.dfdy, b.dfdy);
+  EXPECT_EQ(a.dfdydot, b.dfdydot);
+}
+
+// stiffness(b, G, a, i, e, k) = ∇₀N_a,J A_iJkL ∇₀N_e,L, with A from tangent_apply, and the
+// response's stress is the law's first Piola stress.
+TEST(NeoHookean, PointResponseContractsTheTangent) {
+  const NeoHookean m{0.2, 0.5};
+  Mat3 F;
+  F << 1.1, 0.1, -0.05, 0.02, 0.93, 0.08, -0.04, 0.06, 1.05;
+  const double J = F.determinant();
+  const Mat3 FinvT = F.inverse().transpose();
+  ShapeGradients dN;
+  for (int a = 0; a < 10; ++a)
+    for (int j = 0; j < 3; ++j) dN(a, j) = 0.1 * (a + 1) * (j - 1.2) + 0.05 * a * a * (j == 1);
+  const ShapeGradients b = dN * F.inverse();
+  const ShapeProducts G = dN * dN.transpose();
+  const NeoHookean::Tangent r = m.response(F, J);
+  EXPECT_LT((r.first_piola(F, FinvT) - m.first_piola(F)).norm(), 1e-15);
+  for (int e = 0; e < 10; ++e)
+    for (int k = 0; k < 3; ++k) {
+      const Mat3 H = Vec3::Unit(k) * dN.row(e);  // H_kL = ∇₀N_e,L
+      const Mat3 AH = m.tangent_apply(F, H);
+      for (int a = 0; a < 10; ++a)
+        for (int i = 0; i < 3; ++i)
+          EXPECT_NEAR(r.stiffness(b, G, a, i, e, k), AH.row(i).dot(dN.row(a)), 1e-13);
+    }
+}
+
+}  // namespace
+}  // namespace biphasic
