@@ -33,7 +33,8 @@ class Reader {
   void doubles(std::vector<double>& out, std::size_t n, const char* what) {
     need(n * sizeof(double), what);
     out.resize(n);
-    std::memcpy(out.data(), bytes_.data() + pos_, n * sizeof(double));
+    if (n > 0)
+      std::memcpy(out.data(), bytes_.data() + pos_, n * sizeof(double));  // data() may be null
     pos_ += n * sizeof(double);
   }
   std::string text(std::size_t n, const char* what) {
