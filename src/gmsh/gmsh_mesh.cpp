@@ -415,7 +415,7 @@ Mesh extract_current_model() {
       mesh.file_tags[corner_tags.size() + i] = static_cast<Index>(edge_tags[i]);
   }
   mesh.node_sets = extract_node_sets(mesh, new_index, coordinates);
-  check_mesh(mesh);  // again, for the node sets' names
+  check_node_sets(mesh);
   return mesh;
 }
 

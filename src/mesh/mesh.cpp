@@ -221,6 +221,11 @@ void check_mesh(const Mesh& mesh) {
       }
     }
   }
+  check_node_sets(mesh);
+}
+
+void check_node_sets(const Mesh& mesh) {
+  const Index nn = mesh.num_nodes();
   // Boundary conditions name a set: a name given to a surface and a point or curve, or to a
   // point and a curve, would be resolved silently to one of them.
   auto kind = [](int dimension) {

@@ -91,4 +91,8 @@ void orient_boundary_faces(Mesh& mesh);
 /// std::runtime_error describing the first violation found.
 void check_mesh(const Mesh& mesh);
 
+/// The node-set part of check_mesh alone: nodes in range, no name shared by a surface, point
+/// or curve. For a mesh whose other invariants check_mesh has already confirmed.
+void check_node_sets(const Mesh& mesh);
+
 }  // namespace biphasic
