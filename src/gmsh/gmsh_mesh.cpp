@@ -14,8 +14,6 @@
 #include <limits>
 #include <mutex>
 #include <numbers>
-#include <optional>
-#include <set>
 #include <span>
 #include <sstream>
 #include <stdexcept>
@@ -27,16 +25,16 @@
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "gmsh_meshing.hpp"
+#include "msh_prescan.hpp"
 
 namespace biphasic {
 
 namespace {
 
-// gmsh element type codes.
-constexpr int kGmshTri3 = 2;
-constexpr int kGmshTet4 = 4;
-constexpr int kGmshTri6 = 9;
-constexpr int kGmshTet10 = 11;
+using detail::kGmshTet10;
+using detail::kGmshTet4;
+using detail::kGmshTri3;
+using detail::kGmshTri6;
 
 // Our local node k of a 10-node tet is gmsh's local node kFromGmshTet10[k].
 constexpr std::array<int, 10> kFromGmshTet10{0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
@@ -419,152 +417,6 @@ Mesh extract_current_model() {
   return mesh;
 }
 
-// Nodes per element of a gmsh element type (gmsh must be initialized); 0 if gmsh does not know
-// the type.
-int gmsh_nodes_per_element(int type) {
-  std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
-  } catch (...) {
-    return 0;
-  }
-  return num_nodes;
-}
-
-template <class T>
-bool read_raw(std::istream& in, T& value) {
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(T)));
-}
-
-// Element types in the $Elements section of a binary .msh file (2.2 or 4.1, little-endian
-// data as gmsh writes it on this machine, 8-byte size_t), skipping each block's data by its
-// node count; nullopt for anything unexpected (truncated, counts beyond the file's size).
-std::optional<std::set<int>> scan_binary_element_types(std::istream& in, bool v2,
-                                                       std::uintmax_t file_size) {
-  std::string line;
-  std::getline(in, line);  // rest of the format line
-  int one = 0;
-  if (!read_raw(in, one) || one != 1) return std::nullopt;
-  while (std::getline(in, line) && line.rfind("$Elements", 0) != 0) {
-  }
-  if (!in) return std::nullopt;
-  const auto left = [&]() -> std::uintmax_t {
-    const auto at = in.tellg();
-    return at < 0 || static_cast<std::uintmax_t>(at) > file_size
-               ? 0
-               : file_size - static_cast<std::uintmax_t>(at);
-  };
-  std::set<int> types;
-  if (v2) {  // ASCII count line, then blocks: type, count, tags (ints), elements of ints
-    std::uint64_t count = 0;
-    if (!(in >> count)) return std::nullopt;
-    std::getline(in, line);
-    for (std::uint64_t seen = 0; seen < count;) {
-      std::array<int, 3> header{};
-      if (!read_raw(in, header)) return std::nullopt;
-      const auto [type, in_block, tags] = header;
-      const int nodes = gmsh_nodes_per_element(type);
-      if (in_block <= 0 || tags < 0 || nodes <= 0) return std::nullopt;
-      const std::uintmax_t bytes_each = (1u + static_cast<std::uintmax_t>(tags) + nodes) * 4u;
-      if (static_cast<std::uintmax_t>(in_block) > left() / bytes_each) return std::nullopt;
-      types.insert(type);
-      in.seekg(static_cast<std::streamoff>(bytes_each * static_cast<std::uintmax_t>(in_block)),
-               std::ios::cur);
-      seen += static_cast<std::uint64_t>(in_block);
-    }
-  } else {  // blocks, count, min tag, max tag (size_t); per block dim, entity, type (int),
-            // count (size_t), then count × (tag + nodes) size_t
-    std::array<std::uint64_t, 4> header{};
-    if (!read_raw(in, header)) return std::nullopt;
-    for (std::uint64_t b = 0; b < header[0]; ++b) {
-      std::array<int, 3> block{};
-      std::uint64_t in_block = 0;
-      if (!read_raw(in, block) || !read_raw(in, in_block)) return std::nullopt;
-      const int nodes = gmsh_nodes_per_element(block[2]);
-      if (nodes <= 0) return std::nullopt;
-      const std::uintmax_t bytes_each = (1u + static_cast<std::uintmax_t>(nodes)) * 8u;
-      if (in_block > left() / bytes_each) return std::nullopt;
-      types.insert(block[2]);
-      in.seekg(static_cast<std::streamoff>(bytes_each * in_block), std::ios::cur);
-    }
-  }
-  return types;
-}
-
-// Element types present in a .msh file of format 2.x or 4.1 (ASCII or binary), read from its
-// $Elements section without loading the file into gmsh; nullopt for other formats or
-// anything unexpected. gmsh keeps one element type per entity and misreads (or overruns
-// memory on) an entity that mixes orders, so such files must be rejected before gmsh loads
-// them. Needs an initialized gmsh for the node counts of binary element blocks.
-std::optional<std::set<int>> scan_element_types(const std::string& path) {
-  std::error_code ec;
-  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
-  if (ec) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line) && line.rfind("$MeshFormat", 0) != 0) {
-  }
-  std::string version;
-  int file_type = -1, data_size = 0;
-  if (!(in >> version >> file_type >> data_size)) return std::nullopt;
-  const bool v2 = version.rfind("2", 0) == 0;
-  if (!v2 && version != "4.1") return std::nullopt;
-  if (file_type == 1) {
-    if (data_size != sizeof(std::uint64_t)) return std::nullopt;
-    return scan_binary_element_types(in, v2, file_size);
-  }
-  if (file_type != 0) return std::nullopt;
-  while (std::getline(in, line) && line.rfind("$Elements", 0) != 0) {
-  }
-  if (!in) return std::nullopt;
-  std::set<int> types;
-  if (v2) {
-    std::size_t count = 0;
-    if (!(in >> count)) return std::nullopt;
-    std::getline(in, line);
-    for (std::size_t i = 0; i < count; ++i) {
-      std::size_t tag = 0;
-      int type = 0;
-      if (!std::getline(in, line) || !(std::istringstream(line) >> tag >> type)) {
-        return std::nullopt;
-      }
-      types.insert(type);
-    }
-  } else {
-    std::size_t blocks = 0, count = 0, min_tag = 0, max_tag = 0;
-    if (!(in >> blocks >> count >> min_tag >> max_tag)) return std::nullopt;
-    for (std::size_t b = 0; b < blocks; ++b) {
-      int dim = 0, entity = 0, type = 0;
-      std::size_t in_block = 0;
-      if (!(in >> dim >> entity >> type >> in_block)) return std::nullopt;
-      types.insert(type);
-      std::getline(in, line);
-      for (std::size_t i = 0; i < in_block; ++i) {
-        if (!std::getline(in, line)) return std::nullopt;
-      }
-    }
-  }
-  return types;
-}
-
-// Rejects files whose tetrahedra and triangles do not all have the same order.
-void check_single_order(const std::set<int>& types) {
-  const bool tet4 = types.count(kGmshTet4) > 0, tet10 = types.count(kGmshTet10) > 0;
-  const bool tri3 = types.count(kGmshTri3) > 0, tri6 = types.count(kGmshTri6) > 0;
-  if (tet4 && tet10) {
-    throw std::runtime_error("mixed element orders: both 4-node and 10-node tetrahedra");
-  }
-  if (tri3 && tri6) {
-    throw std::runtime_error("mixed element orders: both 3-node and 6-node triangles");
-  }
-  if ((tet4 && tri6) || (tet10 && tri3)) {
-    throw std::runtime_error(std::string("mixed element orders: ") + (tet4 ? "4" : "10") +
-                             "-node tetrahedra with " + (tri3 ? "3" : "6") + "-node triangles");
-  }
-}
-
 /// The z of the layer interfaces of a swept quarter cylinder (column_layer_z's grading).
 std::vector<double> cylinder_layer_z(const QuarterCylinderSpec& spec) {
   ColumnSpec column;
@@ -747,7 +599,7 @@ Mesh gmsh_read(const std::string& path) {
     }
     if (!std::ifstream(path)) throw std::runtime_error("file cannot be opened for reading");
     GmshSession session;
-    if (const auto types = scan_element_types(path)) check_single_order(*types);
+    prescan_msh(path);
     gmsh::merge(path);
     return extract_current_model();
   });

@@ -138,6 +138,35 @@ TEST(MeshReadGmsh, MixedElementOrdersInBinaryFilesAreAnError) {
   }
 }
 
+// gmsh 4.8's 2.x reader reports an element naming an undefined node and then dereferences it
+// (a segmentation fault found by fuzzing): the reader must refuse such files first, in ASCII
+// and in binary.
+TEST(MeshReadGmsh, ElementNamingAnUndefinedNodeIsAnError) {
+  ScratchDir dir;
+  const std::string binary = dir.file("missing_node_v22_binary.msh");
+  {
+    using biphasic::mixed_order_msh::put;
+    std::ofstream out(binary, std::ios::binary);
+    out << "$MeshFormat\n2.2 1 8\n";
+    put<int>(out, 1);
+    out << "\n$EndMeshFormat\n$Nodes\n3\n";
+    for (int tag = 1; tag <= 3; ++tag) {
+      put<int>(out, tag);
+      for (double x : {tag == 2 ? 1.0 : 0.0, tag == 3 ? 1.0 : 0.0, 0.0}) put(out, x);
+    }
+    out << "\n$EndNodes\n$Elements\n1\n";
+    for (int n : {4, 1, 2, 2, 3, 1, 3, 2, 4}) put(out, n);  // type 4: tag 2, nodes 1 3 2 4
+    out << "\n$EndElements\n";
+  }
+  for (const std::string& path : {fixture("missing_node_v22.msh"), binary}) {
+    const std::string message = error_of(path);
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find("element 2 names node 4, which no $Nodes section before it defines"),
+              std::string::npos)
+        << message;
+  }
+}
+
 // A binary file as gmsh writes it is read (the scan skips its element blocks correctly, so a
 // sound binary file is not refused).
 TEST(MeshReadGmsh, BinaryFilesWrittenByGmshAreRead) {

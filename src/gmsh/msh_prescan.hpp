@@ -1,0 +1,25 @@
+// Checks on a .msh file made before gmsh reads it: defects that gmsh 4.8 misreads or crashes on
+// (inside the gmsh module; gmsh must be initialized).
+#pragma once
+
+#include <string>
+
+namespace biphasic::detail {
+
+/// gmsh element type codes used by the reader.
+inline constexpr int kGmshTri3 = 2;
+inline constexpr int kGmshTet4 = 4;
+inline constexpr int kGmshTri6 = 9;
+inline constexpr int kGmshTet10 = 11;
+
+/// Reads the structure of a .msh file of format 2.x or 4.1 (ASCII or binary) without gmsh's
+/// reader and throws std::runtime_error for the defects gmsh 4.8 does not survive:
+/// - tetrahedra or triangles of both orders (gmsh keeps one element type per entity and
+///   misreads, or overruns memory on, an entity mixing them);
+/// - in format 2.x, an element naming a node that no $Nodes section before it defines (gmsh's
+///   2.x reader reports it and then dereferences the missing node).
+/// Files it does not understand (other formats, truncated sections, unknown element types) pass
+/// unchanged: gmsh reports those itself.
+void prescan_msh(const std::string& path);
+
+}  // namespace biphasic::detail
