@@ -131,15 +131,9 @@ class GmshSession {
 };
 
 std::string element_type_name(int type) {
-  std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
-  } catch (...) {
-    name = "unknown";
-  }
-  return "'" + name + "' (gmsh type " + std::to_string(type) + ")";
+  const auto properties = detail::gmsh_element_type(type);
+  return "'" + (properties ? properties->name : std::string("unknown")) + "' (gmsh type " +
+         std::to_string(type) + ")";
 }
 
 // Physical points and curves of the current model as node sets of `mesh` (whose nodes are

@@ -19,18 +19,18 @@ namespace biphasic::detail {
 
 namespace {
 
-// Nodes per element of a gmsh element type (gmsh must be initialized); 0 if gmsh does not know
-// the type.
+// Nodes per element of a gmsh element type; 0 if gmsh does not know the type.
 int gmsh_nodes_per_element(int type) {
-  std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  try {
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
-  } catch (...) {
-    return 0;
-  }
-  return num_nodes;
+  const auto properties = gmsh_element_type(type);
+  return properties ? properties->num_nodes : 0;
+}
+
+// Bytes of `in` after its read position, for a file of `file_size` bytes.
+std::uintmax_t bytes_left(std::istream& in, std::uintmax_t file_size) {
+  const auto at = in.tellg();
+  return at < 0 || static_cast<std::uintmax_t>(at) > file_size
+             ? 0
+             : file_size - static_cast<std::uintmax_t>(at);
 }
 
 template <class T>
@@ -115,12 +115,7 @@ Scan scan_v2_binary(std::istream& in, std::uintmax_t file_size) {
   std::getline(in, line);  // rest of the format line
   int one = 0;
   if (!read_raw(in, one) || one != 1) return std::nullopt;
-  const auto left = [&]() -> std::uintmax_t {
-    const auto at = in.tellg();
-    return at < 0 || static_cast<std::uintmax_t>(at) > file_size
-               ? 0
-               : file_size - static_cast<std::uintmax_t>(at);
-  };
+  const auto left = [&] { return bytes_left(in, file_size); };
   std::set<int> types;
   NodeTags nodes;
   while (std::getline(in, line)) {
@@ -203,12 +198,7 @@ Scan scan_v41_binary(std::istream& in, std::uintmax_t file_size) {
   while (std::getline(in, line) && !starts_with(line, "$Elements")) {
   }
   if (!in) return std::nullopt;
-  const auto left = [&]() -> std::uintmax_t {
-    const auto at = in.tellg();
-    return at < 0 || static_cast<std::uintmax_t>(at) > file_size
-               ? 0
-               : file_size - static_cast<std::uintmax_t>(at);
-  };
+  const auto left = [&] { return bytes_left(in, file_size); };
   std::set<int> types;
   std::array<std::uint64_t, 4> header{};
   if (!read_raw(in, header)) return std::nullopt;
@@ -243,6 +233,19 @@ void check_single_order(const std::set<int>& types) {
 }
 
 }  // namespace
+
+std::optional<GmshElementType> gmsh_element_type(int type) {
+  GmshElementType properties;
+  int dim = 0, order = 0, num_primary = 0;
+  std::vector<double> local;
+  try {
+    gmsh::model::mesh::getElementProperties(type, properties.name, dim, order, properties.num_nodes,
+                                            local, num_primary);
+  } catch (...) {
+    return std::nullopt;
+  }
+  return properties;
+}
 
 void prescan_msh(const std::string& path) {
   std::error_code ec;

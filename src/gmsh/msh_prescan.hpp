@@ -2,6 +2,7 @@
 // (inside the gmsh module; gmsh must be initialized).
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace biphasic::detail {
@@ -11,6 +12,16 @@ inline constexpr int kGmshTri3 = 2;
 inline constexpr int kGmshTet4 = 4;
 inline constexpr int kGmshTri6 = 9;
 inline constexpr int kGmshTet10 = 11;
+
+/// What gmsh says of an element type.
+struct GmshElementType {
+  std::string name;   ///< e.g. "Tetrahedron 10"
+  int num_nodes = 0;  ///< nodes per element
+};
+
+/// The name and node count of gmsh element type `type` (gmsh must be initialized); nullopt if
+/// gmsh does not know the type.
+std::optional<GmshElementType> gmsh_element_type(int type);
 
 /// Reads the structure of a .msh file of format 2.x or 4.1 (ASCII or binary) without gmsh's
 /// reader and throws std::runtime_error for the defects gmsh 4.8 does not survive:
