@@ -712,6 +712,40 @@ std::string short_number(double x) {
 /// Keys that belong to one or more mesh sources: given with another generated source they would
 /// be silently ignored, so they are an error. (The quarter cylinder's keys are tolerated with
 /// mesh.source = "file", as they always were.)
+/// The parameters of a strain-dependent permeability law given while another law is chosen
+/// (they would be ignored): errors naming the key and the law that uses it.
+void check_permeability_law_keys(const toml::table& root, const Config& config,
+                                 Problems& problems) {
+  if (problems.is_bad("material.permeability_law")) return;
+  using L = PermeabilityLawType;
+  struct Rule {
+    const char* path;
+    std::vector<L> laws;
+    const char* owners;
+  };
+  static const std::vector<Rule> rules{
+      {"material.solid_fraction",
+       {L::HolmesMow, L::Exponential},
+       "\"holmes_mow\" and \"exponential\""},
+      {"material.permeability_kappa", {L::HolmesMow}, "\"holmes_mow\""},
+      {"material.permeability_M",
+       {L::HolmesMow, L::Exponential},
+       "\"holmes_mow\" and \"exponential\""},
+  };
+  const std::string law = shown_at(root, "material.permeability_law", "\"constant\"");
+  for (const Rule& rule : rules) {
+    const toml::node* node = find_path(root, rule.path);
+    if (node == nullptr || problems.is_bad(rule.path) ||
+        std::find(rule.laws.begin(), rule.laws.end(), config.material.permeability_law) !=
+            rule.laws.end()) {
+      continue;
+    }
+    problems.bad_value(rule.path, show(*node),
+                       std::string("applies only to material.permeability_law = ") + rule.owners +
+                           ", not to material.permeability_law = " + law);
+  }
+}
+
 void check_mesh_source_keys(const toml::table& root, const Config& config, Problems& problems) {
   if (problems.is_bad("mesh.source")) return;
   using S = MeshSource;
@@ -824,6 +858,7 @@ void check_reaction_boundaries(const toml::table& root, const Config& config, Pr
 void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
                         Problems& problems) {
   check_mesh_source_keys(root, config, problems);
+  check_permeability_law_keys(root, config, problems);
   check_reaction_boundaries(root, config, problems);
   if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
       config.time.dt > config.time.t_end) {

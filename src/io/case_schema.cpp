@@ -47,6 +47,13 @@ const Names<Stabilisation>& stabilisation_names() {
   return names;
 }
 
+const Names<PermeabilityLawType>& permeability_law_names() {
+  static const Names<PermeabilityLawType> names{{"constant", PermeabilityLawType::Constant},
+                                                {"holmes_mow", PermeabilityLawType::HolmesMow},
+                                                {"exponential", PermeabilityLawType::Exponential}};
+  return names;
+}
+
 const Names<ElementLength>& element_length_names() {
   static const Names<ElementLength> names{{"circumradius", ElementLength::Circumradius},
                                           {"shortest_edge", ElementLength::ShortestEdge},
@@ -355,8 +362,27 @@ std::vector<Key<Config>> build_global_keys() {
       "material.mu", above(0), "MPa", "Shear modulus mu.",
       [](auto& c) -> auto& { return c.material.mu; }));
   keys.push_back(number_key<C>(
-      "material.permeability", above(0), "mm^4/(N s)", "Permeability k of the solid skeleton.",
+      "material.permeability", above(0), "mm^4/(N s)",
+      "Permeability k of the solid skeleton; with a strain-dependent law, k0 = k(J = 1).",
       [](auto& c) -> auto& { return c.material.permeability; }));
+  keys.push_back(choice_key<C>(
+      "material.permeability_law", permeability_law_names(),
+      "How k depends on J = det F: constant (k = k0); holmes_mow (k0 ((J - phi0)/(1 - phi0))^kappa "
+      "exp(M (J^2 - 1)/2), Holmes & Mow 1990); exponential (k0 exp(M (J - 1)/(J - phi0))).",
+      [](auto& c) -> auto& { return c.material.permeability_law; }));
+  keys.push_back(number_key<C>(
+      "material.solid_fraction", strictly_between(0, 1), "",
+      "Solid volume fraction phi0 of the reference state (holmes_mow, exponential); k -> 0 as "
+      "J -> phi0, and J <= phi0 fails the element.",
+      [](auto& c) -> auto& { return c.material.solid_fraction; }));
+  keys.push_back(number_key<C>(
+      "material.permeability_kappa", at_least(0), "",
+      "Exponent kappa of the porosity ratio in the holmes_mow law.",
+      [](auto& c) -> auto& { return c.material.permeability_kappa; }));
+  keys.push_back(number_key<C>(
+      "material.permeability_M", at_least(0), "",
+      "Exponential coefficient M of the holmes_mow and exponential laws.",
+      [](auto& c) -> auto& { return c.material.permeability_M; }));
 
   auto curve = make_key<C>("curves.<name>", Kind::Curve, "s, -",
                            "Named piecewise-linear load curve [[t, value], ...]: at least one "

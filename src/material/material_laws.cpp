@@ -10,8 +10,25 @@ double MaterialLaws::reference_permeability() const {
   return std::visit([](const auto& law) { return law.permeability(1.0); }, permeability);
 }
 
+namespace {
+
+AnyPermeabilityLaw make_permeability_law(const MaterialConfig& m) {
+  switch (m.permeability_law) {
+    case PermeabilityLawType::HolmesMow:
+      return HolmesMowPermeability{m.permeability, m.solid_fraction, m.permeability_kappa,
+                                   m.permeability_M};
+    case PermeabilityLawType::Exponential:
+      return ExponentialPermeability{m.permeability, m.solid_fraction, m.permeability_M};
+    case PermeabilityLawType::Constant:
+      break;
+  }
+  return ConstantPermeability{m.permeability};
+}
+
+}  // namespace
+
 MaterialLaws make_material_laws(const MaterialConfig& material) {
-  return {NeoHookean{material.lambda, material.mu}, ConstantPermeability{material.permeability}};
+  return {NeoHookean{material.lambda, material.mu}, make_permeability_law(material)};
 }
 
 }  // namespace biphasic

@@ -773,3 +773,58 @@ TEST(CaseFile, OverlongFormulaAndExtremeLayerGradingAreRefusedNamingTheKey) {
 
 }  // namespace
 }  // namespace biphasic
+
+namespace biphasic {
+namespace {
+
+using testing_support::has_problem;
+using testing_support::kMinimalCase;
+using testing_support::problems_of;
+
+// The strain-dependent permeability laws: chosen by name with their parameters; parameters of
+// a law that is not chosen, and phi0 outside (0, 1), are errors naming the key.
+TEST(CaseFile, PermeabilityLawAndItsParameters) {
+  const Config c = parse_case(kMinimalCase + R"(
+[material]
+permeability = 2e-3
+permeability_law = "holmes_mow"
+solid_fraction = 0.15
+permeability_kappa = 2.0
+permeability_M = 4.5
+)",
+                              "cases/x.toml", {}, ".");
+  EXPECT_EQ(c.material.permeability_law, PermeabilityLawType::HolmesMow);
+  EXPECT_EQ(c.material.solid_fraction, 0.15);
+  EXPECT_EQ(c.material.permeability_kappa, 2.0);
+  EXPECT_EQ(c.material.permeability_M, 4.5);
+  EXPECT_EQ(parse_case(kMinimalCase, "cases/x.toml", {}, ".").material.permeability_law,
+            PermeabilityLawType::Constant);
+
+  const auto wrong_law = problems_of(kMinimalCase + R"(
+[material]
+permeability_law = "exponential"
+permeability_kappa = 2.0
+)");
+  ASSERT_EQ(wrong_law.size(), 1u);
+  EXPECT_TRUE(has_problem(wrong_law, {"material.permeability_kappa = 2.0",
+                                      "applies only to material.permeability_law = "
+                                      "\"holmes_mow\"",
+                                      "not to material.permeability_law = \"exponential\""}));
+  const auto constant = problems_of(kMinimalCase + "[material]\nsolid_fraction = 0.2\n");
+  EXPECT_TRUE(has_problem(constant, {"material.solid_fraction = 0.2",
+                                     "not to material.permeability_law = \"constant\""}));
+  const auto bad = problems_of(kMinimalCase + R"(
+[material]
+permeability_law = "darcy"
+)");
+  EXPECT_TRUE(has_problem(bad, {"material.permeability_law", "darcy", "holmes_mow"}));
+  const auto phi = problems_of(kMinimalCase + R"(
+[material]
+permeability_law = "holmes_mow"
+solid_fraction = 1.0
+)");
+  EXPECT_TRUE(has_problem(phi, {"material.solid_fraction = 1.0"}));
+}
+
+}  // namespace
+}  // namespace biphasic

@@ -2,8 +2,11 @@
 // the element Jacobian, checked with a test-only permeability law whose derivative is not zero.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "biphasic/material/material_laws.hpp"
 #include "element_fixture.hpp"
@@ -153,6 +156,94 @@ TEST(NeoHookean, PointResponseContractsTheTangent) {
         for (int i = 0; i < 3; ++i)
           EXPECT_NEAR(r.stiffness(b, G, a, i, e, k), AH.row(i).dot(dN.row(a)), 1e-13);
     }
+}
+
+}  // namespace
+}  // namespace biphasic
+
+namespace biphasic {
+namespace {
+
+const HolmesMowPermeability kHolmesMow{2e-3, 0.2, 1.5, 4.0};
+const ExponentialPermeability kExponential{2e-3, 0.2, 3.0};
+
+/// dk/dJ of `law` against a central difference of k at J, relative; the step shrinks with the
+/// distance to full compaction J = φ₀ = 0.2, where k varies fastest.
+template <class Law>
+double derivative_error(const Law& law, double J) {
+  const double h = 1e-6 * (J - 0.2);
+  const double fd = (law.permeability(J + h) - law.permeability(J - h)) / (2.0 * h);
+  return std::abs(law.permeability_derivative(J) - fd) / std::abs(fd);
+}
+
+// Closed-form values at chosen J, derivative against differences, k(1) = k0, and J <= phi0
+// refused with a domain_error naming phi0.
+TEST(StrainDependentPermeability, HolmesMowValuesAndDerivative) {
+  EXPECT_DOUBLE_EQ(kHolmesMow.permeability(1.0), 2e-3);
+  // J = 0.6: ((0.6 − 0.2)/0.8)^1.5 exp(4 (0.36 − 1)/2) = 0.5^1.5 e^−1.28.
+  EXPECT_NEAR(kHolmesMow.permeability(0.6), 2e-3 * std::pow(0.5, 1.5) * std::exp(-1.28), 1e-18);
+  // J = 1.2: (1/0.8)^1.5 exp(2 · 0.44).
+  EXPECT_NEAR(kHolmesMow.permeability(1.2), 2e-3 * std::pow(1.25, 1.5) * std::exp(0.88), 1e-17);
+  for (double J : {0.25, 0.5, 0.9, 1.0, 1.1, 1.5}) EXPECT_LT(derivative_error(kHolmesMow, J), 1e-7);
+  EXPECT_THROW(kHolmesMow.permeability(0.2), std::domain_error);
+  EXPECT_THROW(kHolmesMow.permeability_derivative(0.1), std::domain_error);
+  try {
+    kHolmesMow.permeability(0.15);
+  } catch (const std::domain_error& e) {
+    EXPECT_NE(std::string(e.what()).find("phi0 = 0.2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StrainDependentPermeability, ExponentialValuesAndDerivative) {
+  EXPECT_DOUBLE_EQ(kExponential.permeability(1.0), 2e-3);
+  // J = 0.6: exp(3 · (−0.4)/0.4) = e^−3.
+  EXPECT_NEAR(kExponential.permeability(0.6), 2e-3 * std::exp(-3.0), 1e-18);
+  // Small strain: exponent ≈ M ε/(1 − φ0).
+  const double eps = 1e-4;
+  EXPECT_NEAR(std::log(kExponential.permeability(1.0 + eps) / 2e-3), 3.0 * eps / 0.8, 1e-7);
+  for (double J : {0.25, 0.5, 0.9, 1.0, 1.1, 1.5})
+    EXPECT_LT(derivative_error(kExponential, J), 1e-7);
+  EXPECT_THROW(kExponential.permeability(0.2), std::domain_error);
+}
+
+// The element Jacobian with each strain-dependent law, block by block against central
+// differences (the state's J lies in about [0.8, 1.2], far from phi0 = 0.2).
+TEST(StrainDependentPermeability, ElementJacobianMatchesCentralDifferences) {
+  const ElementCoefficients cases[] = {{0.0, 0.0, 0.0}, {2.5, 0.0, 0.0}, {0.0, 0.35, 0.0}};
+  auto check = [](const std::vector<std::pair<double, double>>& errors, const char* law) {
+    for (std::size_t n = 0; n < errors.size(); ++n) {
+      const auto [e1, e2] = errors[n];
+      EXPECT_LT(e2, 1e-5) << law << " " << kBlocks[n].name;
+      if (e1 > 1e-9) {
+        EXPECT_NEAR(e1 / e2, 4.0, 0.4) << law << " " << kBlocks[n].name << " e1=" << e1;
+      }
+    }
+  };
+  for (const ElementCoefficients& c : cases) {
+    check(block_errors(kHolmesMow, c), "holmes_mow");
+    check(block_errors(kExponential, c), "exponential");
+  }
+}
+
+TEST(StrainDependentPermeability, RegistryBuildsTheChosenLaw) {
+  MaterialConfig m;
+  m.permeability = 3e-3;
+  m.solid_fraction = 0.25;
+  m.permeability_kappa = 2.0;
+  m.permeability_M = 5.0;
+  m.permeability_law = PermeabilityLawType::HolmesMow;
+  const MaterialLaws hm = make_material_laws(m);
+  ASSERT_TRUE(std::holds_alternative<HolmesMowPermeability>(hm.permeability));
+  const auto& h = std::get<HolmesMowPermeability>(hm.permeability);
+  EXPECT_EQ(h.k0, 3e-3);
+  EXPECT_EQ(h.phi0, 0.25);
+  EXPECT_EQ(h.kappa, 2.0);
+  EXPECT_EQ(h.M, 5.0);
+  EXPECT_EQ(hm.reference_permeability(), 3e-3);
+  m.permeability_law = PermeabilityLawType::Exponential;
+  const MaterialLaws ex = make_material_laws(m);
+  ASSERT_TRUE(std::holds_alternative<ExponentialPermeability>(ex.permeability));
+  EXPECT_EQ(std::get<ExponentialPermeability>(ex.permeability).M, 5.0);
 }
 
 }  // namespace

@@ -34,10 +34,21 @@ struct MeshConfig {
   bool ignore_memory_estimate = false;  ///< run even if the size guard expects too little memory
 };
 
+/// How the permeability depends on the volume ratio J (include/biphasic/material/).
+enum class PermeabilityLawType {
+  Constant,     ///< k = k₀
+  HolmesMow,    ///< k₀ ((J − φ₀)/(1 − φ₀))^κ exp(M (J² − 1)/2)
+  Exponential,  ///< k₀ exp(M (J − 1)/(J − φ₀))
+};
+
 struct MaterialConfig {
   double lambda = 0.2;         ///< Lamé λ [MPa]
   double mu = 0.5;             ///< shear modulus μ [MPa]
-  double permeability = 1e-3;  ///< k [mm⁴ N⁻¹ s⁻¹]
+  double permeability = 1e-3;  ///< k₀, the permeability at J = 1 [mm⁴ N⁻¹ s⁻¹]
+  PermeabilityLawType permeability_law = PermeabilityLawType::Constant;
+  double solid_fraction = 0.2;  ///< φ₀, referential solid volume fraction (strain-dependent laws)
+  double permeability_kappa = 0.0;  ///< κ of Holmes–Mow
+  double permeability_M = 0.0;      ///< M of Holmes–Mow and of the exponential law
 };
 
 enum class BcType {

@@ -8,6 +8,8 @@
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/material/constant_permeability.hpp"
+#include "biphasic/material/exponential_permeability.hpp"
+#include "biphasic/material/holmes_mow_permeability.hpp"
 #include "biphasic/material/neo_hookean.hpp"
 
 namespace biphasic {
@@ -15,7 +17,8 @@ namespace biphasic {
 /// Every solid law of the skeleton the solver can run.
 using AnySolidLaw = std::variant<NeoHookean>;
 /// Every permeability law the solver can run.
-using AnyPermeabilityLaw = std::variant<ConstantPermeability>;
+using AnyPermeabilityLaw =
+    std::variant<ConstantPermeability, HolmesMowPermeability, ExponentialPermeability>;
 
 /// The laws of one material.
 struct MaterialLaws {
