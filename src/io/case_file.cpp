@@ -709,53 +709,57 @@ std::string short_number(double x) {
   return buffer.data();
 }
 
-/// Keys that belong to one or more mesh sources: given with another generated source they would
-/// be silently ignored, so they are an error. (The quarter cylinder's keys are tolerated with
-/// mesh.source = "file", as they always were.)
+// A key that applies only to some values of a choice key (mesh.source,
+// material.permeability_law): `owner` names those values for the message.
+template <class Choice>
+struct OwnedKey {
+  const char* path;
+  std::vector<Choice> owners;
+  const char* owner;
+};
+
+// Each key of `rules` given although `chosen` is not one of its owners is an input error naming
+// the values it applies to and the one chosen (shown as written, or `chosen_default`).
+template <class Choice>
+void refuse_keys_of_other_choices(const toml::table& root, Problems& problems,
+                                  const char* choice_key, const char* chosen_default, Choice chosen,
+                                  const std::vector<OwnedKey<Choice>>& rules) {
+  if (problems.is_bad(choice_key)) return;
+  const std::string shown = shown_at(root, choice_key, chosen_default);
+  for (const OwnedKey<Choice>& rule : rules) {
+    const toml::node* node = find_path(root, rule.path);
+    if (node == nullptr || problems.is_bad(rule.path) ||
+        std::find(rule.owners.begin(), rule.owners.end(), chosen) != rule.owners.end()) {
+      continue;
+    }
+    problems.bad_value(
+        rule.path, show(*node),
+        std::string("applies only to ") + rule.owner + ", not to " + choice_key + " = " + shown);
+  }
+}
+
 /// The parameters of a strain-dependent permeability law given while another law is chosen
 /// (they would be ignored): errors naming the key and the law that uses it.
 void check_permeability_law_keys(const toml::table& root, const Config& config,
                                  Problems& problems) {
-  if (problems.is_bad("material.permeability_law")) return;
   using L = PermeabilityLawType;
-  struct Rule {
-    const char* path;
-    std::vector<L> laws;
-    const char* owners;
+  constexpr const char* kBoth = "material.permeability_law = \"holmes_mow\" and \"exponential\"";
+  static const std::vector<OwnedKey<L>> rules{
+      {"material.solid_fraction", {L::HolmesMow, L::Exponential}, kBoth},
+      {"material.permeability_kappa", {L::HolmesMow}, "material.permeability_law = \"holmes_mow\""},
+      {"material.permeability_M", {L::HolmesMow, L::Exponential}, kBoth},
   };
-  static const std::vector<Rule> rules{
-      {"material.solid_fraction",
-       {L::HolmesMow, L::Exponential},
-       "\"holmes_mow\" and \"exponential\""},
-      {"material.permeability_kappa", {L::HolmesMow}, "\"holmes_mow\""},
-      {"material.permeability_M",
-       {L::HolmesMow, L::Exponential},
-       "\"holmes_mow\" and \"exponential\""},
-  };
-  const std::string law = shown_at(root, "material.permeability_law", "\"constant\"");
-  for (const Rule& rule : rules) {
-    const toml::node* node = find_path(root, rule.path);
-    if (node == nullptr || problems.is_bad(rule.path) ||
-        std::find(rule.laws.begin(), rule.laws.end(), config.material.permeability_law) !=
-            rule.laws.end()) {
-      continue;
-    }
-    problems.bad_value(rule.path, show(*node),
-                       std::string("applies only to material.permeability_law = ") + rule.owners +
-                           ", not to material.permeability_law = " + law);
-  }
+  refuse_keys_of_other_choices(root, problems, "material.permeability_law", "\"constant\"",
+                               config.material.permeability_law, rules);
 }
 
+/// Keys that belong to one or more mesh sources: given with another generated source they would
+/// be silently ignored, so they are an error. (The quarter cylinder's keys are tolerated with
+/// mesh.source = "file", as they always were.)
 void check_mesh_source_keys(const toml::table& root, const Config& config, Problems& problems) {
-  if (problems.is_bad("mesh.source")) return;
   using S = MeshSource;
-  struct Rule {
-    const char* path;
-    std::vector<S> sources;
-    const char* owner;
-  };
   constexpr const char* kCylinder = "mesh.source = \"quarter_cylinder\"";
-  static const std::vector<Rule> rules{
+  static const std::vector<OwnedKey<S>> rules{
       {"mesh.radius", {S::QuarterCylinder, S::File}, kCylinder},
       {"mesh.height", {S::QuarterCylinder, S::File}, kCylinder},
       {"mesh.lc", {S::QuarterCylinder, S::File}, kCylinder},
@@ -771,18 +775,9 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
       {"mesh.column", {S::Column}, "mesh.source = \"column\""},
       {"mesh.sphere_octant", {S::SphereOctant}, "mesh.source = \"sphere_octant\""},
   };
-  const std::string source = shown_at(root, "mesh.source", "\"quarter_cylinder\"");
-  for (const Rule& rule : rules) {
-    const toml::node* node = find_path(root, rule.path);
-    if (node == nullptr || problems.is_bad(rule.path) ||
-        std::find(rule.sources.begin(), rule.sources.end(), config.mesh.source) !=
-            rule.sources.end()) {
-      continue;
-    }
-    problems.bad_value(
-        rule.path, show(*node),
-        std::string("applies only to ") + rule.owner + ", not to mesh.source = " + source);
-  }
+  refuse_keys_of_other_choices(root, problems, "mesh.source", "\"quarter_cylinder\"",
+                               config.mesh.source, rules);
+  if (problems.is_bad("mesh.source")) return;
 
   // Too few layers for a grading toward one face (2) or both (3): generate_column's rule, which
   // column_layer_z applies to the column and to the swept quarter cylinder alike.
