@@ -86,11 +86,17 @@ TEST_P(PermeabilityDerivative, JacobianMatchesCentralDifferencesBlockByBlock) {
   }
 }
 
-// Without the dk/dJ term the p-u block is wrong at O(1): the check above can see it.
+// Without the dk/dJ term the p-u block is wrong at O(1), and with GLS, whose c_e = h²/(4k(J))
+// follows k, the u-u block too: the check above can see both.
 TEST_P(PermeabilityDerivative, MissingDerivativeIsDetected) {
   const auto errors = block_errors(QuadraticPermeabilityWithoutDerivative{}, GetParam().c);
   EXPECT_GT(errors[2].second, 1e-3);  // p-u
   EXPECT_LT(errors[3].second, 1e-5);  // p-p does not involve dk/dJ
+  if (GetParam().c.gls_c != 0.0) {
+    EXPECT_GT(errors[0].second, 1e-4) << "u-u";
+  } else {
+    EXPECT_LT(errors[0].second, 1e-5) << "u-u";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Stabilisations, PermeabilityDerivative,
@@ -99,6 +105,38 @@ INSTANTIATE_TEST_SUITE_P(Stabilisations, PermeabilityDerivative,
                                            Coefficients{{0.0, 0.35, 0.0}, "flux_perturbation"},
                                            Coefficients{{2.5, 0.0, 5.0}, "gls_conservative"}),
                          [](const auto& param_info) { return param_info.param.name; });
+
+// Under an affine displacement J is the same at every quadrature point, so the GLS coefficient
+// h²/(4k(J)) of a strain-dependent law equals that of a constant law k = k(J) with c_e scaled by
+// k(1)/k(J): the two residuals agree to round-off (the Darcy terms agree as well).
+TEST(MaterialLaws, GlsCoefficientFollowsThePermeabilityOfTheState) {
+  const std::vector<PointGeometry> geo = test::distorted_tet_geometry();
+  const Eigen::Matrix<double, 10, 3> X = test::distorted_tet();
+  Mat3 H;
+  H << -0.12, 0.02, 0.01, 0.03, -0.08, 0.0, 0.01, -0.02, -0.1;
+  ElementVector y = ElementVector::Zero(), ydot = ElementVector::Zero();
+  for (int a = 0; a < 10; ++a) {
+    y.segment<3>(3 * a) = H * X.row(a).transpose();
+    ydot.segment<3>(3 * a) = 0.3 * H * X.row(a).transpose();
+  }
+  y.tail<4>() << 0.01, -0.02, 0.03, 0.005;
+  const double J = (Mat3::Identity() + H).determinant();
+  const QuadraticPermeability law;
+  const double c_ref = 2.5;
+  ElementOutput with_law, with_constant;
+  const NeoHookean solid{0.2, 0.5};
+  biphasic_element(geo, solid, law, ElementCoefficients{c_ref, 0.0, 0.0}, y, ydot, false, with_law);
+  const double k_J = law.permeability(J), k_1 = law.permeability(1.0);
+  biphasic_element(geo, solid, ConstantPermeability{k_J},
+                   ElementCoefficients{c_ref * k_1 / k_J, 0.0, 0.0}, y, ydot, false, with_constant);
+  EXPECT_LT((with_law.residual - with_constant.residual).norm(), 1e-13 * with_law.residual.norm());
+  // ... and differs from the coefficient frozen at k(1) by the ratio k(1)/k(J) ≈ 1.9.
+  ElementOutput frozen;
+  biphasic_element(geo, solid, ConstantPermeability{k_J}, ElementCoefficients{c_ref, 0.0, 0.0}, y,
+                   ydot, false, frozen);
+  EXPECT_GT((with_law.residual - frozen.residual).head<30>().norm(),
+            1e-3 * with_law.residual.head<30>().norm());
+}
 
 TEST(MaterialLaws, ConstantPermeabilityIsConstant) {
   const ConstantPermeability k{3e-3};

@@ -1,5 +1,5 @@
 // Element kernel of the finite-strain biphasic mixture (docs/formulation.md, the paper §2–3):
-//   R_u = ∫Ω₀ ∇₀f : (P_eff − p J F⁻ᵀ) dX + ∫Ω₀ c_e (F⁻ᵀ : ∇₀f) J̇ dX        (momentum + GLS)
+//   R_u = ∫Ω₀ ∇₀f : (P_eff − p J F⁻ᵀ) dX + ∫Ω₀ c_e(J) (F⁻ᵀ : ∇₀f) J̇ dX     (momentum + GLS)
 //   R_p = ∫Ω₀ g J̇ dX + ∫Ω₀ k(J) J (F⁻ᵀ∇₀p)·(F⁻ᵀ∇₀g) dX                   (mass, Darcy)
 // with J̇ = J F⁻ᵀ : ∇₀u̇ (incremental form) or, for backward Euler, J̇ = (J − Jₙ)/Δt with
 // Jₙ = det(I + ∇₀uₙ), uₙ = u − Δt u̇ (conservative form, ElementCoefficients::volume_rate_dt > 0),
@@ -28,7 +28,9 @@ using ElementMatrix = Eigen::Matrix<double, kElementDofs, kElementDofs>;
 
 /// The per-element coefficients of the stabilisations and of the volume rate.
 struct ElementCoefficients {
-  double gls_c = 0.0;      ///< c_e = h²/(4k) of the semidiscrete GLS term [MPa s]
+  /// c_e = h²/(4k(1)) of the semidiscrete GLS term at the reference permeability [MPa s]; the
+  /// kernel uses c_e k(1)/k(J) = h²/(4k(J)) at each quadrature point.
+  double gls_c = 0.0;
   double flux_beta = 0.0;  ///< β = h²/(4 H_A) of the flux perturbation [mm⁴ N⁻¹]
   /// Δt [s] > 0: J̇ = (J − Jₙ)/Δt, uₙ = u − Δt u̇ (conservative); 0: J̇ = J F⁻ᵀ:∇₀u̇.
   double volume_rate_dt = 0.0;
@@ -66,7 +68,10 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
                       const ElementVector& y, const ElementVector& ydot, bool with_jacobian,
                       ElementOutput& out) {
   using Mat4x3 = Eigen::Matrix<double, 4, 3>;
-  const double ce = coefficients.gls_c;
+  // GLS: c_e(J) = h²/(4 k(J)) = c_e,ref k(1)/k(J) at each quadrature point (docs/formulation.md,
+  // "GLS with a strain-dependent permeability"); for a constant k the ratio is exactly 1.
+  const double ce_ref = coefficients.gls_c;
+  const double k_ref = ce_ref != 0.0 ? permeability.permeability(1.0) : 0.0;
   const double beta_f = coefficients.flux_beta;
   const double dt_c = coefficients.volume_rate_dt;
   const bool conservative = dt_c > 0.0;
@@ -97,6 +102,7 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
     const Mat3 L = Fdot * Finv;               // velocity gradient
     const double divv = L.trace();
     const double k = permeability.permeability(J);
+    const double ce = ce_ref != 0.0 ? ce_ref * (k_ref / k) : 0.0;
     // Conservative form: the previous state uₙ = u − Δt u̇, Jₙ = det Fₙ, bₙ = F⁻ᵀₙ∇₀N.
     double Jn = 0.0;
     ShapeGradients bn_prev;
@@ -166,9 +172,18 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
         out.dfdydot(30 + c, 30 + d) += w * beta_f * ee;
       }
     }
-    // k = k(J): the Darcy term J k (e_c·∇ₓp) gains J (e_c·∇ₓp) dk/dJ ∂J/∂u_bk, ∂J/∂u_bk = J b_bk.
+    // k = k(J): the Darcy term J k (e_c·∇ₓp) gains J (e_c·∇ₓp) dk/dJ ∂J/∂u_bk, ∂J/∂u_bk = J b_bk;
+    // the GLS term c_e(J) J̇ b_ai gains dc_e/dJ J̇ b_ai J b_bk, dc_e/dJ = −c_e (dk/dJ)/k.
     const double dk_dJ = permeability.permeability_derivative(J);
     if (dk_dJ != 0.0) {
+      if (ce != 0.0) {
+        const double s = -w * ce * (dk_dJ / k) * J * Jdot;
+        for (int a = 0; a < 10; ++a)
+          for (int i = 0; i < 3; ++i)
+            for (int bn = 0; bn < 10; ++bn)
+              for (int kk = 0; kk < 3; ++kk)
+                out.dfdy(3 * a + i, 3 * bn + kk) += s * b(a, i) * b(bn, kk);
+      }
       for (int c = 0; c < 4; ++c) {
         const double s = w * J * J * dk_dJ * e.row(c).dot(gp);
         for (int bn = 0; bn < 10; ++bn)
