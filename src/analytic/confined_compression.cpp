@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "numerics.hpp"
 
@@ -24,6 +26,20 @@ void check_column(const ConfinedRamp& c) {
                             ", h = " + std::to_string(c.thickness) +
                             ", t₀ = " + std::to_string(c.ramp_time) + " must be > 0");
   }
+  if (!(c.permeability_kappa >= 0.0 && c.permeability_M >= 0.0)) {
+    throw std::domain_error(
+        "confined ramp: Holmes-Mow κ = " + std::to_string(c.permeability_kappa) +
+        ", M = " + std::to_string(c.permeability_M) + " must be >= 0");
+  }
+  if ((c.permeability_kappa != 0.0 || c.permeability_M != 0.0) &&
+      !(c.solid_fraction > 0.0 && c.solid_fraction < 1.0)) {
+    throw std::domain_error("confined ramp: Holmes-Mow φ₀ = " + std::to_string(c.solid_fraction) +
+                            " must lie in (0, 1)");
+  }
+}
+
+bool constant_permeability(const ConfinedRamp& c) {
+  return c.permeability_kappa == 0.0 && c.permeability_M == 0.0;
 }
 
 /// F(T) = T + 1/3 − (2/π²) Σ_{n≥1} e^{−n²π² T}/n², the ramp response per (H_A V₀ h/c).
@@ -50,19 +66,37 @@ double ramp_response(double T) {
 // ---- finite strain ---------------------------------------------------------------------------
 
 /// Neo-Hookean column in uniaxial strain: P_eff, the Kirchhoff potential Φ and Φ' = D.
-struct Column {
-  double mu, lambda, k;
-  double stress(double s) const { return neo_hookean_uniaxial_stress(mu, lambda, s); }
-  /// Φ(s) = k ∫₁ˢ P_eff'(r)/r dr = k [μ (ln s − 1/(2s²) + 1/2) + λ ((2 ln s − 1)/(4s²) + 1/4)].
-  double potential(double s) const {
-    const double l = std::log(s), is2 = 1.0 / (s * s);
-    return k * (mu * (l - 0.5 * is2 + 0.5) + lambda * (0.25 * (2.0 * l - 1.0) * is2 + 0.25));
+class Column {
+ public:
+  explicit Column(const ConfinedRamp& c) : c_(c), constant_(constant_permeability(c)) {
+    if (!constant_) std::tie(nodes_, weights_) = detail::gauss_legendre(16);
   }
-  /// D(s) = Φ'(s) = k P_eff'(s)/s = k [μ (1/s + 1/s³) + λ (1 − ln s)/s³].
+  double stress(double s) const { return neo_hookean_uniaxial_stress(c_.mu, c_.lambda, s); }
+  /// Φ(s) = ∫₁ˢ k(r) P_eff'(r)/r dr; for a constant k
+  /// Φ(s) = k [μ (ln s − 1/(2s²) + 1/2) + λ ((2 ln s − 1)/(4s²) + 1/4)].
+  double potential(double s) const {
+    if (constant_) {
+      const double l = std::log(s), is2 = 1.0 / (s * s);
+      return c_.permeability *
+             (c_.mu * (l - 0.5 * is2 + 0.5) + c_.lambda * (0.25 * (2.0 * l - 1.0) * is2 + 0.25));
+    }
+    const double half = 0.5 * (s - 1.0), mid = 0.5 * (s + 1.0);
+    double sum = 0.0;
+    for (std::size_t q = 0; q < nodes_.size(); ++q)
+      sum += weights_[q] * diffusivity(mid + half * nodes_[q]);
+    return half * sum;
+  }
+  /// D(s) = Φ'(s) = k(s) P_eff'(s)/s = k(s) [μ (1/s + 1/s³) + λ (1 − ln s)/s³].
   double diffusivity(double s) const {
     const double is3 = 1.0 / (s * s * s);
-    return k * (mu * (1.0 / s + is3) + lambda * (1.0 - std::log(s)) * is3);
+    return confined_permeability(c_, s) *
+           (c_.mu * (1.0 / s + is3) + c_.lambda * (1.0 - std::log(s)) * is3);
   }
+
+ private:
+  ConfinedRamp c_;
+  bool constant_;
+  std::vector<double> nodes_, weights_;
 };
 
 /// Solves a tridiagonal system (sub-diagonal a, diagonal b, super-diagonal c) in place of d.
@@ -83,7 +117,7 @@ void solve_tridiagonal(std::vector<double>& a, std::vector<double>& b, std::vect
 class ColumnSolver {
  public:
   ColumnSolver(const ConfinedRamp& c, int cells)
-      : column_{c.mu, c.lambda, c.permeability}, n_(static_cast<std::size_t>(cells) + 1) {
+      : column_(c), n_(static_cast<std::size_t>(cells) + 1) {
     // Distance from the top d(η) = h (e^{gη} − 1)/(e^g − 1), η uniform: cells from
     // g/(e^g − 1) h/N ≈ 0.07 h/N at the top to 4 h/N at the bottom.
     constexpr double g = 4.0;
@@ -265,6 +299,17 @@ double confined_ramp_stress_linear(const ConfinedRamp& c, double t) {
   const double T0 = cv * c.ramp_time / (h * h);
   if (t <= c.ramp_time) return scale * ramp_response(T);
   return scale * (ramp_response(T) - ramp_response(T - T0));
+}
+
+double confined_permeability(const ConfinedRamp& c, double s) {
+  if (constant_permeability(c)) return c.permeability;
+  const double phi0 = c.solid_fraction;
+  if (!(s > phi0)) {
+    throw std::domain_error("confined ramp reference: stretch λ_z = " + std::to_string(s) +
+                            " ≤ φ₀ = " + std::to_string(phi0) + " (the pores have closed)");
+  }
+  return c.permeability * std::pow((s - phi0) / (1.0 - phi0), c.permeability_kappa) *
+         std::exp(0.5 * c.permeability_M * (s * s - 1.0));
 }
 
 double neo_hookean_uniaxial_stress(double mu, double lambda, double s) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -104,6 +105,31 @@ std::vector<double> scan_roots(F&& f, double x0, double step, int n,
 /// i erfc(x) = ∫ₓ^∞ erfc(s) ds = e^{−x²}/√π − x erfc(x).
 inline double ierfc(double x) {
   return std::exp(-x * x) / std::sqrt(std::numbers::pi) - x * std::erfc(x);
+}
+
+/// Nodes and weights of the n-point Gauss–Legendre rule on [−1, 1] (Newton on the Legendre
+/// recurrence from Chebyshev guesses; exact for polynomials of degree 2n − 1).
+inline std::pair<std::vector<double>, std::vector<double>> gauss_legendre(int n) {
+  std::vector<double> x(static_cast<std::size_t>(n)), w(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int iter = 0; iter < 100; ++iter) {
+      double p0 = 1.0, p1 = z;  // P_0, P_1
+      for (int k = 2; k <= n; ++k) {
+        const double pk = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1.0);  // P_n'(z)
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-16) break;
+    }
+    x[static_cast<std::size_t>(i)] = z;
+    w[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+  return {x, w};
 }
 
 }  // namespace biphasic::analytic::detail

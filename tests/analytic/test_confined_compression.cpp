@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "biphasic/analytic/confined_compression.hpp"
@@ -138,6 +139,69 @@ TEST(ConfinedRampFiniteStrain, AgreesWithLinearTheoryAtSmallStrain) {
   const std::vector<double> sigma = confined_ramp_stress_neo_hookean(c, kTimes);
   for (std::size_t i = 0; i < kTimes.size(); ++i) {
     EXPECT_LT(std::abs(sigma[i] / confined_ramp_stress_linear(c, kTimes[i]) - 1.0), 1e-6)
+        << "t = " << kTimes[i];
+  }
+}
+
+/// FEBio's column with a Holmes–Mow permeability, φ₀ = 0.2, κ = 1, M = 4: at λ_z = 0.9 the
+/// permeability is (0.7/0.8) e^{−0.38} = 60 % of k₀.
+ConfinedRamp holmes_mow() {
+  ConfinedRamp c;
+  c.solid_fraction = 0.2;
+  c.permeability_kappa = 1.0;
+  c.permeability_M = 4.0;
+  return c;
+}
+
+TEST(ConfinedRampHolmesMow, PermeabilityFollowsTheLaw) {
+  const ConfinedRamp c = holmes_mow();
+  EXPECT_DOUBLE_EQ(confined_permeability(c, 1.0), 1e-3);
+  EXPECT_NEAR(confined_permeability(c, 0.9), 1e-3 * 0.875 * std::exp(-0.38), 1e-18);
+  EXPECT_THROW(confined_permeability(c, 0.2), std::domain_error);
+  EXPECT_EQ(confined_permeability(ConfinedRamp{}, 0.5), 1e-3);
+}
+
+// M = 1e−12 takes the numerically integrated potential with k(s) = k₀ (1 + O(1e−12)): it must
+// give the closed-form potential's answer, which checks the quadrature of Φ.
+TEST(ConfinedRampHolmesMow, NumericalPotentialMatchesTheClosedForm) {
+  ConfinedRamp c = with_poisson(0.3);
+  const std::vector<double> constant = confined_ramp_stress_neo_hookean(c, kTimes);
+  c.solid_fraction = 0.2;
+  c.permeability_M = 1e-12;
+  const std::vector<double> numeric = confined_ramp_stress_neo_hookean(c, kTimes);
+  for (std::size_t i = 0; i < kTimes.size(); ++i)
+    EXPECT_NEAR(numeric[i], constant[i], 1e-10 * std::abs(constant[i])) << "t = " << kTimes[i];
+}
+
+// A permeability falling with compression drains the column more slowly: the ramp's stress is
+// higher, the relaxation slower, and equilibrium, which does not depend on k, the same
+// P_eff(0.9) = μ (0.9 − 1/0.9).
+TEST(ConfinedRampHolmesMow, SlowerDrainageSameEquilibrium) {
+  const std::vector<double> times = {10, 50, 100, 200, 500, 1e5};
+  const std::vector<double> constant = confined_ramp_stress_neo_hookean(ConfinedRamp{}, times);
+  const std::vector<double> hm = confined_ramp_stress_neo_hookean(holmes_mow(), times);
+  for (std::size_t i = 0; i + 1 < times.size(); ++i)
+    EXPECT_LT(hm[i], constant[i] - 0.01 * std::abs(constant[i])) << "t = " << times[i];
+  const double equilibrium = 0.5 * (0.9 - 1.0 / 0.9);
+  EXPECT_NEAR(hm.back(), equilibrium, 1e-9);
+  EXPECT_NEAR(constant.back(), equilibrium, 1e-9);
+}
+
+TEST(ConfinedRampHolmesMow, ResolutionIndependent) {
+  const ConfinedRamp c = holmes_mow();
+  const std::vector<double> a = confined_ramp_stress_neo_hookean(c, kTimes);
+  const std::vector<double> b = confined_ramp_stress_neo_hookean(c, kTimes, {400, 400, true});
+  for (std::size_t i = 0; i < kTimes.size(); ++i)
+    EXPECT_NEAR(a[i], b[i], 2e-6 * std::abs(b[i])) << "t = " << kTimes[i];
+}
+
+// At a strain of 1e−6, k(λ_z) = k₀ (1 + O(1e−5)) and the column is linear: the series holds.
+TEST(ConfinedRampHolmesMow, AgreesWithLinearTheoryAtSmallStrain) {
+  ConfinedRamp c = holmes_mow();
+  c.strain = 1e-6;
+  const std::vector<double> sigma = confined_ramp_stress_neo_hookean(c, kTimes);
+  for (std::size_t i = 0; i < kTimes.size(); ++i) {
+    EXPECT_LT(std::abs(sigma[i] / confined_ramp_stress_linear(c, kTimes[i]) - 1.0), 2e-5)
         << "t = " << kTimes[i];
   }
 }

@@ -15,6 +15,13 @@ analytic::ConfinedRamp ramp_of(const Config& config) {
   c.mu = config.material.mu;
   c.lambda = config.material.lambda;
   c.permeability = config.material.permeability;
+  if (config.material.permeability_law == PermeabilityLawType::HolmesMow) {
+    c.solid_fraction = config.material.solid_fraction;
+    c.permeability_kappa = config.material.permeability_kappa;
+    c.permeability_M = config.material.permeability_M;
+  } else if (config.material.permeability_law != PermeabilityLawType::Constant) {
+    ADD_FAILURE() << "the confined reference has constant and Holmes-Mow permeability only";
+  }
   c.thickness = config.mesh.column.height;
   const PlatenRamp ramp = top_platen_ramp(config);
   c.strain = -ramp.displacement / c.thickness;

@@ -14,8 +14,11 @@
 //   ∂λ_z/∂t = ∂/∂Z ((k/λ_z) ∂p/∂Z)                     (J̇ + Div(k J C⁻¹ ∇₀p) = 0 in 1D)
 //   ∫₀ʰ (λ_z − 1) dZ = u_top(t)
 // Since ∂p/∂Z = ∂P_eff/∂Z, λ_z obeys ∂λ_z/∂t = ∂²Φ(λ_z)/∂Z² with the Kirchhoff potential
-// Φ(s) = k ∫₁ˢ P_eff'(r)/r dr, no flux at Z = 0 and, from the volume constraint, the outflow
+// Φ(s) = ∫₁ˢ k(r) P_eff'(r)/r dr, no flux at Z = 0 and, from the volume constraint, the outflow
 // ∂Φ/∂Z = u̇_top at Z = h; then σ = P_eff(λ_z(h)) since p(h) = 0.
+// The permeability may follow the Holmes–Mow law of J = λ_z (Holmes & Mow, J. Biomech. 23,
+// 1990): k(s) = k₀ ((s − φ₀)/(1 − φ₀))^κ exp(M (s² − 1)/2); Φ is then integrated numerically
+// (16-point Gauss–Legendre on [1, s]), in closed form for a constant k.
 #pragma once
 
 #include <span>
@@ -31,7 +34,14 @@ struct ConfinedRamp {
   double thickness = 1.0;      ///< h [mm]
   double strain = 0.1;         ///< final compressive strain ε₀ = V₀ t₀/h [-]
   double ramp_time = 100.0;    ///< t₀ [s]
+  /// Holmes–Mow permeability: κ, M ≥ 0 and φ₀ ∈ (0, 1) (κ = M = 0: k = k₀ constant).
+  double permeability_kappa = 0.0;
+  double permeability_M = 0.0;
+  double solid_fraction = 0.0;  ///< φ₀, used when κ or M is not zero
 };
+
+/// The column's permeability k(λ_z) [mm⁴/(N s)] (k₀ when κ = M = 0); throws if λ_z ≤ φ₀.
+double confined_permeability(const ConfinedRamp& c, double stretch);
 
 /// Linear theory (Mow et al. 1980): platen stress σ(t) [MPa] at time t ≥ 0 [s]. The constant
 /// part of the series is summed in closed form; for c t < 0.1 h² (c = H_A k) the equivalent
