@@ -15,18 +15,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 from verification_csv import print_errors, read, save  # noqa: E402
 
 
-def main():
-    csv_dir = pathlib.Path(sys.argv[1]) / "confined_compression"
-    fig_dir = pathlib.Path(sys.argv[2])
-    if not csv_dir.is_dir():
-        print("  no confined_compression/ results; skipped")
-        return
-    runs = sorted(p.stem for p in csv_dir.glob("*.csv") if not p.stem.endswith("_errors"))
+def plot(csv_dir, fig_dir, runs, title, reference_label, name):
+    """Stress and relative error of `runs`, which share one reference, into FIG_DIR/name.png."""
     fig, (ax_s, ax_e) = plt.subplots(1, 2, figsize=(12, 4.8))
     base = read(csv_dir / f"{runs[0]}.csv")
     t = [r["t"] for r in base]
-    ax_s.plot(t, [-r["stress_neo_hookean"] for r in base], "k-", label="Neo-Hookean, finite strain")
-    ax_s.plot(t, [-r["stress_linear"] for r in base], "k--", label="linear (Mow et al. 1980)")
+    ax_s.plot(t, [-r["stress_neo_hookean"] for r in base], "k-", label=reference_label)
+    ax_s.plot(t, [-r["stress_linear"] for r in base], "k--", label="linear (Mow et al. 1980), k = k₀")
     for run, marker in zip(runs, "o^sv"):
         rows = read(csv_dir / f"{run}.csv")
         rows = rows[:: max(1, len(rows) // 60)]
@@ -38,18 +33,37 @@ def main():
                   label=run)
     ax_s.set_xlabel("t [s]")
     ax_s.set_ylabel("compressive platen stress −P_zz [MPa]")
-    ax_s.set_title("10 % ramp over 100 s, then hold (μ = 0.5, λ = 0, k = 1e-3, h = 1)",
-                   fontsize=9)
+    ax_s.set_title(title, fontsize=9)
     ax_s.legend(fontsize=8)
     ax_e.axhline(5e-3, color="r", lw=0.8, ls="--", label="asserted bound 0.5 %")
     ax_e.set_yscale("log")
     ax_e.set_xlabel("t [s]")
-    ax_e.set_ylabel("|σ_h / σ_NH − 1|")
+    ax_e.set_ylabel("|σ_h / σ_ref − 1|")
     ax_e.set_title("relative error against the finite-strain reference")
     ax_e.legend(fontsize=8)
-    save(fig, fig_dir, "confined_compression")
+    save(fig, fig_dir, name)
+
+
+def main():
+    csv_dir = pathlib.Path(sys.argv[1]) / "confined_compression"
+    fig_dir = pathlib.Path(sys.argv[2])
+    if not csv_dir.is_dir():
+        print("  no confined_compression/ results; skipped")
+        return
+    runs = sorted(p.stem for p in csv_dir.glob("*.csv") if not p.stem.endswith("_errors"))
+    constant = [r for r in runs if not r.startswith("holmes_mow")]
+    holmes_mow = [r for r in runs if r.startswith("holmes_mow")]
+    if constant:
+        plot(csv_dir, fig_dir, constant,
+             "10 % ramp over 100 s, then hold (μ = 0.5, λ = 0, k = 1e-3, h = 1)",
+             "Neo-Hookean, finite strain", "confined_compression")
+    if holmes_mow:
+        plot(csv_dir, fig_dir, holmes_mow,
+             "the same with Holmes–Mow k(J): k₀ = 1e-3, φ₀ = 0.2, κ = 1, M = 4",
+             "Neo-Hookean, finite strain, Holmes–Mow k", "confined_compression_holmes_mow")
     print_errors(csv_dir, [("max_relative_error", "max relative error"),
                               ("max_top_bottom_imbalance", "top/bottom imbalance")])
+
 
 if __name__ == "__main__":
     main()
