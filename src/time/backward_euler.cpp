@@ -306,7 +306,8 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     } catch (const InvertedElement& e) {
       return std::string(
                  "the step's first trial state (the previous state with the new "
-                 "boundary values) inverts an element: ") +
+                 "boundary values) is not admissible in an element (inverted, or outside a "
+                 "material law's range): ") +
              e.what();
     } catch (const std::exception& e) {
       fatal = true;
