@@ -29,7 +29,7 @@ constexpr double kMaxToleranceFraction = 1e-3;
 /// longer small against the residuals the loads produce: KINSOL would then accept the initial
 /// guess of every step after zero iterations, i.e. a solution that never moved (with
 /// atol = 1e308, p ≡ 0). Where the data imply no scale (body forces alone), nothing is checked.
-void check_absolute_tolerances(const BiphasicProblem& problem, const NewtonConfig& newton) {
+void check_absolute_tolerances(const SemidiscreteSystem& problem, const NewtonConfig& newton) {
   const auto [u_scale, p_scale] = problem.solution_scales();
   struct Field {
     const char* key;
@@ -60,7 +60,7 @@ void check_absolute_tolerances(const BiphasicProblem& problem, const NewtonConfi
 }  // namespace
 
 struct BackwardEuler::Impl {
-  BiphasicProblem& problem;
+  SemidiscreteSystem& problem;
   TimeConfig time;
   SUNContext ctx = nullptr;
   void* kin = nullptr;
@@ -83,7 +83,7 @@ struct BackwardEuler::Impl {
   double jac_t = 0.0, jac_dt = 0.0;
   std::vector<double> jac_y, jac_y_old;
 
-  Impl(BiphasicProblem& p, const TimeConfig& tc) : problem(p), time(tc) {}
+  Impl(SemidiscreteSystem& p, const TimeConfig& tc) : problem(p), time(tc) {}
   ~Impl() {
     if (kin) KINFree(&kin);
     if (A) SUNMatDestroy(A);
@@ -140,7 +140,7 @@ struct BackwardEuler::Impl {
   }
 };
 
-BackwardEuler::BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
+BackwardEuler::BackwardEuler(SemidiscreteSystem& problem, const TimeConfig& time,
                              const LinearSolverConfig& linear_solver)
     : impl_(std::make_unique<Impl>(problem, time)) {
   checked_interval_count(time.t_end, time.dt);  // a step count that fits, before any work
@@ -252,7 +252,7 @@ void BackwardEuler::set_resume_state(const std::vector<double>& s) {
 
 void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& observer) {
   Impl& m = *impl_;
-  BiphasicProblem& problem = m.problem;
+  SemidiscreteSystem& problem = m.problem;
   const NewtonConfig& newton = m.time.newton;
   const Index n = problem.size();
   const double t_end = m.time.t_end;

@@ -56,7 +56,7 @@ constexpr int kShiftCorrectionIterations = 20;
 
 }  // namespace
 
-std::pair<double, double> absolute_tolerances(const BiphasicProblem& problem,
+std::pair<double, double> absolute_tolerances(const SemidiscreteSystem& problem,
                                               const BdfConfig& bdf) {
   const auto [u_scale, p_scale] = problem.solution_scales();
   // Without data to scale by (a run driven by body forces alone, say): the former fixed values.
@@ -70,7 +70,7 @@ std::pair<double, double> absolute_tolerances(const BiphasicProblem& problem,
 }
 
 struct BdfIntegrator::Impl {
-  BiphasicProblem& problem;
+  SemidiscreteSystem& problem;
   TimeConfig time;
   LinearSolverConfig solver;
   std::string step_log_path;
@@ -85,7 +85,7 @@ struct BdfIntegrator::Impl {
   ShiftedMatrixFamily family;
   bool shift_correction = false;
 
-  Impl(BiphasicProblem& p, const TimeConfig& tc, const LinearSolverConfig& lc, std::string log)
+  Impl(SemidiscreteSystem& p, const TimeConfig& tc, const LinearSolverConfig& lc, std::string log)
       : problem(p), time(tc), solver(lc), step_log_path(std::move(log)) {}
   ~Impl() {
     if (ida) IDAFree(&ida);
@@ -119,7 +119,7 @@ struct BdfIntegrator::Impl {
   }
 };
 
-BdfIntegrator::BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
+BdfIntegrator::BdfIntegrator(SemidiscreteSystem& problem, const TimeConfig& time,
                              const LinearSolverConfig& linear_solver, std::string step_log_path)
     : impl_(std::make_unique<Impl>(problem, time, linear_solver, std::move(step_log_path))) {
   checked_interval_count(time.t_end, time.dt);  // an output count that fits, before any work
@@ -169,7 +169,7 @@ int BdfIntegrator::planned_outputs() const {
 
 void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& observer) {
   Impl& m = *impl_;
-  BiphasicProblem& problem = m.problem;
+  SemidiscreteSystem& problem = m.problem;
   const BdfConfig& bdf = m.time.bdf;
   const Index n = problem.size();
   const double t_end = m.time.t_end;
@@ -382,7 +382,8 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
   if (step_log.is_open()) flush_checked(step_log, log_path);
 }
 
-std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, const Config& config,
+std::unique_ptr<TimeIntegrator> make_time_integrator(SemidiscreteSystem& problem,
+                                                     const Config& config,
                                                      const std::string& output_dir) {
   switch (config.time.integrator) {
     case Integrator::BackwardEuler:

@@ -49,7 +49,7 @@ double max_abs(const std::vector<double>& v) {
 /// One factorisation of the regularised matrix, solves with it.
 class RegularisedSystem {
  public:
-  RegularisedSystem(const BiphasicProblem& problem, const std::vector<double>& values,
+  RegularisedSystem(const SemidiscreteSystem& problem, const std::vector<double>& values,
                     const LinearSolverConfig& solver, LinearSolverStats* stats) {
     if (SUNContext_Create(nullptr, &ctx_) != 0)
       throw std::runtime_error("SUNContext_Create failed");
@@ -111,7 +111,7 @@ class RegularisedSystem {
 
 }  // namespace
 
-PressureRole pressure_role(const BiphasicProblem& problem) {
+PressureRole pressure_role(const SemidiscreteSystem& problem) {
   return problem.has_gls() && !problem.has_flux_perturbation() ? PressureRole::Value
                                                                : PressureRole::Rate;
 }
@@ -129,7 +129,7 @@ std::string consistent_start_failure(double t, const std::string& cause) {
 /// `correction` receives the change of y that restores them to first order with the
 /// differential unknowns (the volumes the rates act on) held: the same regularised matrix with
 /// the right-hand side (−ε F_u, 0).
-ConsistentState consistent_pass(BiphasicProblem& problem, double t, const std::vector<double>& y,
+ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std::vector<double>& y,
                                 const LinearSolverConfig& solver, LinearSolverStats* stats,
                                 double tolerance, std::vector<double>& correction) {
   correction.clear();
@@ -248,8 +248,9 @@ ConsistentState consistent_pass(BiphasicProblem& problem, double t, const std::v
 
 }  // namespace
 
-ConsistentState consistent_start(BiphasicProblem& problem, double t, const std::vector<double>& y,
-                                 const LinearSolverConfig& solver, LinearSolverStats* stats) {
+ConsistentState consistent_start(SemidiscreteSystem& problem, double t,
+                                 const std::vector<double>& y, const LinearSolverConfig& solver,
+                                 LinearSolverStats* stats) {
   // Momentum residual left by the algebraic constraints that calls for a correction of y: a
   // state from IDA satisfies them only to its Newton tolerance (a restart at a kink).
   const double force_scale = problem.stiffness_scale() * problem.solution_scales().first;

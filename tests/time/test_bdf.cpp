@@ -11,6 +11,7 @@
 
 #include "../common/box_mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/paper_scene.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"

@@ -12,6 +12,7 @@
 
 #include "biphasic/app/run.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "column_case.hpp"
 

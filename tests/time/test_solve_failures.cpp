@@ -17,6 +17,7 @@
 #include <tuple>
 
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 #include "biphasic/time/solver_messages.hpp"

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/field_error.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 #include "mms_solution.hpp"

@@ -10,6 +10,7 @@
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/field_error.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 

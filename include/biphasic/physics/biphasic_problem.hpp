@@ -1,6 +1,6 @@
-// The semidiscrete biphasic system F(t, y, ẏ) = 0 on a mesh (docs/formulation.md), with its
-// Jacobian dF/dy + c_j dF/dẏ assembled into the fixed CSC pattern. Both time integrators
-// drive this one object.
+// The semidiscrete biphasic system F(t, y, ẏ) = 0 on a tetrahedral mesh (docs/formulation.md),
+// with its Jacobian dF/dy + c_j dF/dẏ assembled into the fixed CSC pattern: the
+// SemidiscreteSystem (time/semidiscrete_system.hpp) that both time integrators drive.
 #pragma once
 
 #include <array>
@@ -16,28 +16,16 @@
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
-
-/// Counters and timings of the residual/Jacobian evaluations [s].
-struct AssemblyStats {
-  long residual_evaluations = 0;
-  long jacobian_evaluations = 0;
-  double residual_seconds = 0.0;
-  double jacobian_seconds = 0.0;
-};
 
 /// A scalar field of the reference position X [mm] and time t [s].
 using ScalarField = std::function<double(const Vec3& X, double t)>;
 /// A vector field of the reference position X [mm] and time t [s].
 using VectorField = std::function<Vec3(const Vec3& X, double t)>;
 
-/// Thrown when an element inverts (det F ≤ 0) during an evaluation.
-struct InvertedElement : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-class BiphasicProblem {
+class BiphasicProblem final : public SemidiscreteSystem {
  public:
   /// Resolves boundary conditions by name, builds the geometry cache and the pattern, and
   /// takes the body force and fluid source formulas of config.loads (checked to be finite at
@@ -65,26 +53,24 @@ class BiphasicProblem {
   /// Backward Euler's conservative volume rate: from now on J̇ = (J − Jₙ)/Δt with
   /// uₙ = u − Δt u̇ in the mass rows and the GLS term (Δt = `dt` [s], the step about to be
   /// solved); `dt` = 0 restores J̇ = J F⁻ᵀ:∇₀u̇. Throws std::invalid_argument if dt < 0.
-  void set_conservative_volume_rate(double dt);
+  void set_conservative_volume_rate(double dt) override;
 
   const Mesh& mesh() const { return mesh_; }
-  const SparsityPattern& pattern() const { return pattern_; }
-  Index size() const { return pattern_.size(); }
-  Index num_u() const { return pattern_.num_u(); }
+  const SparsityPattern& pattern() const override { return pattern_; }
   /// Unknowns fixed by Dirichlet conditions (their rows read s·(y_i − ḡ_i(t)) = 0).
-  const std::vector<char>& constrained() const { return constrained_; }
+  const std::vector<char>& constrained() const override { return constrained_; }
 
   /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
-  void residual(double t, const double* y, const double* ydot, double* F);
+  void residual(double t, const double* y, const double* ydot, double* F) override;
   /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].
-  std::pair<double, double> field_norms(const double* F) const;
+  std::pair<double, double> field_norms(const double* F) const override;
   /// ∂F/∂t at fixed (y, ẏ): the rates of the boundary values and loads (right derivatives of
   /// the load curves at t), body force and fluid source included.
-  void time_derivative(double t, double* dFdt) const;
+  void time_derivative(double t, double* dFdt) const override;
   /// dF/dy + c_j dF/dẏ into the pattern's value array (size nnz); if `rate_values` is given,
   /// dF/dẏ alone into it (same pattern; zero on Dirichlet rows) from the same element pass.
   void jacobian(double t, const double* y, const double* ydot, double cj, double* values,
-                double* rate_values = nullptr);
+                double* rate_values = nullptr) override;
   /// The element kernel's output for element e at the global state (for tests).
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;
@@ -122,9 +108,9 @@ class BiphasicProblem {
   double volume_change(const double* y) const;
 
   /// Sets the constrained entries of y to ḡ(t) and of ẏ to dḡ/dt (ẏ may be null).
-  void apply_dirichlet(double t, double* y, double* ydot) const;
+  void apply_dirichlet(double t, double* y, double* ydot) const override;
   /// Load-curve kinks of every boundary condition (sorted, unique) [s].
-  std::vector<double> breakpoints() const;
+  std::vector<double> breakpoints() const override;
   /// c_e = scale · h_e² / (4k) of element e (0 without GLS) [MPa s].
   double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
   /// β = scale · h_e² / (4 H_A) of the flux perturbation (0 without it) [mm⁴ N⁻¹].
@@ -139,27 +125,27 @@ class BiphasicProblem {
   /// The structure the iterative solver needs; `shifts()` returns (c_j, cj_gls) of the matrix
   /// being set up. The problem must outlive the solver.
   SaddlePointStructure saddle_point_structure(
-      std::function<std::pair<double, double>()> shifts) const;
+      std::function<std::pair<double, double>()> shifts) const override;
 
   /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa].
   double oedometric_modulus() const { return laws_.p_wave_modulus(); }
-  bool has_gls() const { return !gls_c_.empty(); }
-  bool has_flux_perturbation() const { return !flux_beta_.empty(); }
+  bool has_gls() const override { return !gls_c_.empty(); }
+  bool has_flux_perturbation() const override { return !flux_beta_.empty(); }
   /// Smallest GLS relaxation time min_e c_e / H_A over the elements [s] (0 without GLS).
-  double gls_time_scale() const;
+  double gls_time_scale() const override;
   /// Sizes of the solution the data imply over the run [mm], [MPa]: the largest prescribed
   /// displacement or the traction's strain σ/H_A over the body's extent; the largest prescribed
   /// pressure, traction, or H_A times a prescribed strain (displacement over the body's
   /// extent along its component). 0 where the data say nothing.
-  std::pair<double, double> solution_scales() const { return solution_scales_; }
+  std::pair<double, double> solution_scales() const override { return solution_scales_; }
 
-  AssemblyStats& stats() { return stats_; }
+  AssemblyStats& stats() override { return stats_; }
   /// Stiffness scale H_A · (mean element size) [N/mm]: turns a displacement into a force, e.g.
   /// to compare a momentum residual with a displacement tolerance.
-  double stiffness_scale() const { return row_scale_u_; }
+  double stiffness_scale() const override { return row_scale_u_; }
   /// Conductance scale k · (mean element size) [mm³/(s MPa)]: turns a pressure into a mass
   /// residual (a volume rate).
-  double conductance_scale() const { return row_scale_p_; }
+  double conductance_scale() const override { return row_scale_p_; }
 
  private:
   struct Dirichlet {

@@ -12,14 +12,14 @@
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
 
 class BackwardEuler final : public TimeIntegrator {
  public:
-  BackwardEuler(BiphasicProblem& problem, const TimeConfig& time,
+  BackwardEuler(SemidiscreteSystem& problem, const TimeConfig& time,
                 const LinearSolverConfig& linear_solver);
   ~BackwardEuler() override;
   BackwardEuler(const BackwardEuler&) = delete;

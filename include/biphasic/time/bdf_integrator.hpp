@@ -11,20 +11,21 @@
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
-#include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/time/consistent_start.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
 
 /// IDA's absolute tolerances (displacement [mm], pressure [MPa]): the configured ones, or
 /// where they are 0, rtol times the problem's solution scales.
-std::pair<double, double> absolute_tolerances(const BiphasicProblem& problem, const BdfConfig& bdf);
+std::pair<double, double> absolute_tolerances(const SemidiscreteSystem& problem,
+                                              const BdfConfig& bdf);
 
 class BdfIntegrator final : public TimeIntegrator {
  public:
   /// `step_log_path`: if not empty (and time.bdf.step_log), every internal step's t, h, order.
-  BdfIntegrator(BiphasicProblem& problem, const TimeConfig& time,
+  BdfIntegrator(SemidiscreteSystem& problem, const TimeConfig& time,
                 const LinearSolverConfig& linear_solver, std::string step_log_path = {});
   ~BdfIntegrator() override;
   BdfIntegrator(const BdfIntegrator&) = delete;
@@ -44,7 +45,8 @@ class BdfIntegrator final : public TimeIntegrator {
 };
 
 /// The integrator the configuration names.
-std::unique_ptr<TimeIntegrator> make_time_integrator(BiphasicProblem& problem, const Config& config,
+std::unique_ptr<TimeIntegrator> make_time_integrator(SemidiscreteSystem& problem,
+                                                     const Config& config,
                                                      const std::string& output_dir);
 
 }  // namespace biphasic

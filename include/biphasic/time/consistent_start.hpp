@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "biphasic/io/config.hpp"
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
 
@@ -30,13 +30,13 @@ struct ConsistentState {
 };
 
 /// The role the problem's stabilisation gives the pressure.
-PressureRole pressure_role(const BiphasicProblem& problem);
+PressureRole pressure_role(const SemidiscreteSystem& problem);
 
 /// Consistent (y₀, ẏ₀) at time t from the state `y` (its displacements are kept; see
 /// PressureRole for its pressures), solved in double precision with the configured linear
 /// solver: one factorisation, a few solves (counted in `stats` if given).
-ConsistentState consistent_start(BiphasicProblem& problem, double t, const std::vector<double>& y,
-                                 const LinearSolverConfig& solver,
+ConsistentState consistent_start(SemidiscreteSystem& problem, double t,
+                                 const std::vector<double>& y, const LinearSolverConfig& solver,
                                  LinearSolverStats* stats = nullptr);
 
 }  // namespace biphasic

@@ -37,7 +37,7 @@ int guarded_callback(CallbackFailure& failure, Body&& body) noexcept;
 
 }  // namespace biphasic
 
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
 

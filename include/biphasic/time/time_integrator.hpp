@@ -103,7 +103,7 @@ inline int checked_interval_count(double t_end, double dt) {
   return static_cast<int>(count);
 }
 
-/// What run_case drives: backward Euler or BDF over one BiphasicProblem.
+/// What run_case drives: backward Euler or BDF over one SemidiscreteSystem.
 class TimeIntegrator {
  public:
   virtual ~TimeIntegrator() = default;
