@@ -19,13 +19,13 @@
 #include <optional>
 #include <sstream>
 
+#include "biphasic/app/field_output.hpp"
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/app/segment_counters.hpp"
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
-#include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/line_probe.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/io/reaction_csv.hpp"
@@ -253,10 +253,11 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   const bool append = resume != nullptr;
   ProbeRecorder probe_csv(std::move(probes), problem, out_dir.string(),
                           append ? std::optional<double>(resume->t) : std::nullopt);
-  std::unique_ptr<FieldWriter> fields;
-  if (config.output.fields) {
-    fields = append ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, resume->t)
-                    : std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh);
+  std::unique_ptr<FieldOutput> fields;
+  if (!config.output.fields.empty()) {
+    fields =
+        std::make_unique<FieldOutput>(config.output.fields, out_dir.string(), mesh,
+                                      append ? std::optional<double>(resume->t) : std::nullopt);
   }
   std::unique_ptr<ReactionCsv> reaction_csv;
   if (!config.output.reactions.empty()) {
@@ -280,7 +281,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   auto write_output = [&](double t, const std::vector<double>& y, const std::vector<double>& ydot) {
     split(y);
     const std::optional<LineMeasures> m = probe_csv.write(t, u, p);
-    if (fields) fields->write(t, u, p);
+    if (fields) fields->write(problem, t, y);
     nlohmann::json o = m ? measures_json(*m) : nlohmann::json::object();
     o["t"] = t;
     if (reaction_csv) {

@@ -279,6 +279,13 @@ Read read_value(const toml::node& node, const KeyInfo& key) {
       return read_vector(node, key);
     case Kind::StringList:
       return read_string_list(node, key);
+    case Kind::Selection: {
+      if (const auto* b = node.as_boolean()) return Read{Value{b->get()}, {}};
+      if (node.as_array() == nullptr)
+        return fail("expected true or false, or an array of names (each one of " +
+                    join(key.choices, ", ") + ")");
+      return read_string_list(node, key);
+    }
     case Kind::Expression:
       return read_expression(node);
     case Kind::Curve:

@@ -90,6 +90,17 @@ const Names<Ordering>& ordering_names() {
   return names;
 }
 
+const Names<FieldQuantity>& field_quantity_names() {
+  static const Names<FieldQuantity> names{{"displacement", FieldQuantity::Displacement},
+                                          {"pressure", FieldQuantity::Pressure},
+                                          {"stress", FieldQuantity::Stress},
+                                          {"effective_stress", FieldQuantity::EffectiveStress},
+                                          {"J", FieldQuantity::J},
+                                          {"flux", FieldQuantity::Flux},
+                                          {"permeability", FieldQuantity::Permeability}};
+  return names;
+}
+
 const Names<FactorPrecision>& precision_names() {
   static const Names<FactorPrecision> names{{"double", FactorPrecision::Double},
                                             {"mixed", FactorPrecision::Mixed}};
@@ -206,6 +217,38 @@ Key<Target> string_list_key(std::string path, std::vector<std::string> choices, 
     access(t) = std::get<std::vector<std::string>>(v);
   };
   key.fetch = [access](const Target& t) -> Value { return std::vector<std::string>{access(t)}; };
+  return key;
+}
+
+/// A Selection key: `true` stores `defaults`, `false` nothing, an array the named values (in
+/// the order of `names`, whatever the order given). Reported back the same way: `true` for
+/// the defaults, `false` for none, else the names.
+template <class Target, class E, class Access>
+Key<Target> selection_key(std::string path, const Names<E>& names, std::vector<E> defaults,
+                          std::string help, Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::Selection, "", std::move(help));
+  key.choices = names_of(names);
+  key.store = [access, &names, defaults](Target& t, const Value& v) {
+    std::vector<E>& chosen = access(t);
+    if (const bool* all = std::get_if<bool>(&v)) {
+      chosen = *all ? defaults : std::vector<E>{};
+      return;
+    }
+    const auto& given = std::get<std::vector<std::string>>(v);
+    chosen.clear();
+    for (const auto& entry : names) {
+      if (std::find(given.begin(), given.end(), entry.first) != given.end())
+        chosen.push_back(entry.second);
+    }
+  };
+  key.fetch = [access, &names, defaults](const Target& t) -> Value {
+    const std::vector<E>& chosen = access(t);
+    if (chosen == defaults) return true;
+    if (chosen.empty()) return false;
+    std::vector<std::string> out;
+    for (E value : chosen) out.push_back(name_of(names, value));
+    return out;
+  };
   return key;
 }
 
@@ -595,8 +638,13 @@ std::vector<Key<Config>> build_global_keys() {
       "output.every", at_least(1), {},
       "Write outputs every n steps (the last step is always written).",
       [](auto& c) -> auto& { return c.output.every; }));
-  keys.push_back(bool_key<C>(
-      "output.fields", "Write the HDF5/XDMF field output.",
+  keys.push_back(selection_key<C>(
+      "output.fields", field_quantity_names(), default_field_quantities(),
+      "The HDF5/XDMF field output (fields.h5, fields.xdmf): true = displacement and pressure, "
+      "false or [] = no field files, or the list of quantities to write: displacement [mm] and "
+      "pressure [MPa] on the nodes; per element (the mean over its quadrature points) stress "
+      "(total Cauchy stress) and effective_stress [MPa], J (det F), flux (Darcy flux "
+      "-k(J) grad p) [mm/s] and permeability k(J) [mm^4/(N s)]; docs/output_fields.md.",
       [](auto& c) -> auto& { return c.output.fields; }));
   keys.push_back(bool_key<C>(
       "output.line",
@@ -731,6 +779,8 @@ std::string kind_name(Kind kind) {
       return "array of 3 numbers";
     case Kind::StringList:
       return "array of strings";
+    case Kind::Selection:
+      return "boolean or array of strings";
     case Kind::Curve:
       return "array of [t, value]";
     case Kind::Expression:
@@ -767,6 +817,8 @@ std::string allowed_text(const KeyInfo& key) {
       return key.range.describe();
     case Kind::StringList:
       return key.choices.empty() ? "distinct names" : "each one of " + code_list(key.choices);
+    case Kind::Selection:
+      return "`true`, `false`, or distinct names, each one of " + code_list(key.choices);
     case Kind::Curve:
       return ">= 1 point, t strictly increasing";
     case Kind::Expression:
@@ -1092,6 +1144,10 @@ std::string to_string(FactorPrecision precision) {
 
 std::string to_string(Ordering ordering) {
   return case_schema::name_of(case_schema::ordering_names(), ordering);
+}
+
+std::string to_string(FieldQuantity quantity) {
+  return case_schema::name_of(case_schema::field_quantity_names(), quantity);
 }
 
 }  // namespace biphasic

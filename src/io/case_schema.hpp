@@ -25,6 +25,7 @@ enum class Kind {
   Choice,      ///< one string from `choices`
   Vector3,     ///< array of exactly 3 numbers
   StringList,  ///< array of strings, each from `choices`
+  Selection,   ///< true (a default set), false (none) or an array of strings from `choices`
   Curve,       ///< array of [t, value] pairs (only under [curves])
   Expression,  ///< formula of x, y, z, t (string; a number is taken as a constant formula)
 };

@@ -225,13 +225,65 @@ class H5File {
 constexpr const char* kTimes = "/fields/times";
 constexpr hsize_t kTimesChunk = 64;
 
+/// The XDMF AttributeType of a cell field with `components` values per cell.
+const char* attribute_type(int components) {
+  switch (components) {
+    case 1:
+      return "Scalar";
+    case 3:
+      return "Vector";
+    case 6:
+      return "Tensor6";
+    case 9:
+      return "Tensor";
+    default:
+      return "";
+  }
+}
+
+/// Throws std::invalid_argument if a cell field of `layout` cannot be written beside the
+/// others (see the FieldWriter constructor).
+void check_layout(const FieldLayout& layout) {
+  std::vector<std::string> taken{"times", "displacement", "pressure", "pressure_vertices"};
+  for (const CellFieldSpec& f : layout.cells) {
+    if (f.name.empty() || f.name.find('/') != std::string::npos || f.name == "." ||
+        f.name == "..") {
+      throw std::invalid_argument("FieldWriter: invalid cell field name '" + f.name + "'");
+    }
+    if (std::find(taken.begin(), taken.end(), f.name) != taken.end()) {
+      throw std::invalid_argument("FieldWriter: cell field '" + f.name +
+                                  "' clashes with another field of that name");
+    }
+    if (*attribute_type(f.components) == '\0') {
+      throw std::invalid_argument("FieldWriter: cell field '" + f.name + "' has " +
+                                  std::to_string(f.components) +
+                                  " components (1, 3, 6 or 9 can be written)");
+    }
+    taken.push_back(f.name);
+  }
+}
+
 }  // namespace
 
-FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh)
+std::vector<std::string> FieldWriter::groups() const {
+  std::vector<std::string> out;
+  if (layout_.displacement) out.push_back("displacement");
+  if (layout_.pressure) {
+    out.push_back("pressure");
+    out.push_back("pressure_vertices");
+  }
+  for (const CellFieldSpec& f : layout_.cells) out.push_back(f.name);
+  return out;
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         FieldLayout layout)
     : stem_(stem),
       num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
-      num_tets_(static_cast<Index>(mesh.tets.size())) {
+      num_tets_(static_cast<Index>(mesh.tets.size())),
+      layout_(std::move(layout)) {
+  check_layout(layout_);
   namespace fs = std::filesystem;
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
   h5_path_ = (dir / (stem + ".h5")).string();
@@ -264,9 +316,7 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
     const H5File h5(file_, h5_path_);
     h5.create_group("/mesh");
     h5.create_group("/fields");
-    h5.create_group("/fields/displacement");
-    h5.create_group("/fields/pressure");
-    h5.create_group("/fields/pressure_vertices");
+    for (const std::string& group : groups()) h5.create_group("/fields/" + group);
 
     std::vector<double> xyz;
     xyz.reserve(3 * mesh.nodes.size());
@@ -307,11 +357,13 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
 }
 
 FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
-                         double keep_until)
+                         double keep_until, FieldLayout layout)
     : stem_(stem),
       num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
-      num_tets_(static_cast<Index>(mesh.tets.size())) {
+      num_tets_(static_cast<Index>(mesh.tets.size())),
+      layout_(std::move(layout)) {
+  check_layout(layout_);
   namespace fs = std::filesystem;
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
   h5_path_ = (dir / (stem + ".h5")).string();
@@ -345,10 +397,15 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
     std::size_t keep = 0;
     while (keep < times.size() && times[keep] <= keep_until) ++keep;
     // Outputs after the checkpoint, and any a crash left half-written, go.
+    const std::vector<std::string> field_groups = groups();
+    for (const std::string& group : field_groups) {
+      const std::string name = "/fields/" + group;
+      if (H5Lexists(file_, name.c_str(), H5P_DEFAULT) <= 0) h5.create_group(name);
+    }
     for (std::size_t i = keep;; ++i) {
       bool any = false;
-      for (const char* group : {"displacement", "pressure", "pressure_vertices"}) {
-        const std::string name = "/fields/" + std::string(group) + "/" + std::to_string(i);
+      for (const std::string& group : field_groups) {
+        const std::string name = "/fields/" + group + "/" + std::to_string(i);
         if (H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0) {
           any = true;
           if (H5Ldelete(file_, name.c_str(), H5P_DEFAULT) < 0) h5.fail("cannot delete " + name);
@@ -373,33 +430,55 @@ FieldWriter::~FieldWriter() {
 }
 
 void FieldWriter::write(double t, const std::vector<double>& u,
-                        const std::vector<double>& p_vertices) {
+                        const std::vector<double>& p_vertices,
+                        const std::vector<std::vector<double>>& cells) {
   const H5File h5(file_, h5_path_);
   const auto nn = static_cast<std::size_t>(num_nodes_);
   const auto nv = static_cast<std::size_t>(num_vertices_);
-  if (u.size() != 3 * nn) {
+  const auto ne = static_cast<std::size_t>(num_tets_);
+  if (layout_.displacement && u.size() != 3 * nn) {
     h5.fail("displacement has " + std::to_string(u.size()) + " entries, expected 3 x " +
             std::to_string(nn) + " nodes = " + std::to_string(3 * nn));
   }
-  if (p_vertices.size() != nv) {
+  if (layout_.pressure && p_vertices.size() != nv) {
     h5.fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
             std::to_string(nv) + " (one per vertex)");
+  }
+  if (cells.size() != layout_.cells.size()) {
+    h5.fail(std::to_string(cells.size()) + " cell fields given, the layout has " +
+            std::to_string(layout_.cells.size()));
+  }
+  for (std::size_t f = 0; f < cells.size(); ++f) {
+    const auto expected = static_cast<std::size_t>(layout_.cells[f].components) * ne;
+    if (cells[f].size() != expected) {
+      h5.fail(layout_.cells[f].name + " has " + std::to_string(cells[f].size()) +
+              " entries, expected " + std::to_string(layout_.cells[f].components) + " x " +
+              std::to_string(ne) + " cells = " + std::to_string(expected));
+    }
   }
   if (!std::isfinite(t)) h5.fail("output time is not finite");
 
   const std::string step = std::to_string(times_.size());
-  const std::vector<double> p_nodes = pressure_at_nodes(edges_, p_vertices);
 
   const auto put = [&](const std::string& group, std::vector<hsize_t> dims, const double* data,
-                       const char* units) {
+                       const std::string& units) {
     const std::string name = "/fields/" + group + "/" + step;
     H5Id set = h5.write_dataset(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data);
     h5.write_attribute(set.get(), name, "time", t);
     h5.write_attribute(set.get(), name, "units", units);
   };
-  put("displacement", {nn, 3}, u.data(), "mm");
-  put("pressure", {nn}, p_nodes.data(), "MPa");
-  put("pressure_vertices", {nv}, p_vertices.data(), "MPa");
+  if (layout_.displacement) put("displacement", {nn, 3}, u.data(), "mm");
+  if (layout_.pressure) {
+    const std::vector<double> p_nodes = pressure_at_nodes(edges_, p_vertices);
+    put("pressure", {nn}, p_nodes.data(), "MPa");
+    put("pressure_vertices", {nv}, p_vertices.data(), "MPa");
+  }
+  for (std::size_t f = 0; f < cells.size(); ++f) {
+    const CellFieldSpec& spec = layout_.cells[f];
+    std::vector<hsize_t> dims{ne};
+    if (spec.components > 1) dims.push_back(static_cast<hsize_t>(spec.components));
+    put(spec.name, dims, cells[f].data(), spec.units);
+  }
 
   {
     H5Id set(H5Dopen2(file_, kTimes, H5P_DEFAULT), H5Dclose);
@@ -450,14 +529,22 @@ void FieldWriter::write_xdmf() const {
       << "        </Topology>\n"
       << "        <Geometry GeometryType=\"XYZ\">\n"
       << "          " << item(n + " 3", "Float", 8, "/mesh/coordinates") << "\n"
-      << "        </Geometry>\n"
-      << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
-      << "          " << item(n + " 3", "Float", 8, "/fields/displacement/" + step) << "\n"
-      << "        </Attribute>\n"
-      << "        <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-      << "          " << item(n, "Float", 8, "/fields/pressure/" + step) << "\n"
-      << "        </Attribute>\n"
-      << "      </Grid>\n";
+      << "        </Geometry>\n";
+    const auto attribute = [&](const std::string& name, const char* type, const char* center,
+                               const std::string& dims) {
+      x << "        <Attribute Name=\"" << xml_escape(name) << "\" AttributeType=\"" << type
+        << "\" Center=\"" << center << "\">\n"
+        << "          " << item(dims, "Float", 8, "/fields/" + xml_escape(name) + "/" + step)
+        << "\n"
+        << "        </Attribute>\n";
+    };
+    if (layout_.displacement) attribute("displacement", "Vector", "Node", n + " 3");
+    if (layout_.pressure) attribute("pressure", "Scalar", "Node", n);
+    for (const CellFieldSpec& f : layout_.cells) {
+      attribute(f.name, attribute_type(f.components), "Cell",
+                f.components == 1 ? e : e + " " + std::to_string(f.components));
+    }
+    x << "      </Grid>\n";
   }
   x << "    </Grid>\n"
     << "  </Domain>\n"

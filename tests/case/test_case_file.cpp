@@ -177,7 +177,7 @@ TEST(CaseFile, FullCaseParsesToExpectedValues) {
   EXPECT_EQ(c.output.line_start, (std::array<double, 3>{1.0, 2.0, 0.0}));
   EXPECT_EQ(c.output.line_end, (std::array<double, 3>{1.0, 2.0, 7.0}));
   EXPECT_EQ(c.output.every, 3);
-  EXPECT_FALSE(c.output.fields);
+  EXPECT_TRUE(c.output.fields.empty());
   EXPECT_FALSE(c.output.line);
 }
 
@@ -212,9 +212,46 @@ TEST(CaseFile, DefaultsAppliedWhenKeysAbsent) {
   EXPECT_EQ(c.linear_solver.ordering, Ordering::Metis);
   EXPECT_EQ(c.output.line_end, d.output.line_end);
   EXPECT_EQ(c.output.every, 1);
-  EXPECT_TRUE(c.output.fields);
+  EXPECT_EQ(c.output.fields, default_field_quantities());
   ASSERT_EQ(c.bcs.size(), 1u);
   EXPECT_EQ(c.bcs[0].curve, "");
+}
+
+TEST(CaseFile, FieldOutputIsAFlagOrAListOfQuantities) {
+  using Q = FieldQuantity;
+  const auto fields = [](const std::string& value) {
+    return parse_case(kMinimalCase + "[output]\nfields = " + value + "\n", "x.toml").output.fields;
+  };
+  EXPECT_EQ(fields("true"), (std::vector<Q>{Q::Displacement, Q::Pressure}));
+  EXPECT_TRUE(fields("false").empty());
+  EXPECT_TRUE(fields("[]").empty());
+  // Any order given; kept in the order of the reference (docs/case_file.md).
+  EXPECT_EQ(fields(R"(["permeability", "J", "stress", "displacement"])"),
+            (std::vector<Q>{Q::Displacement, Q::Stress, Q::J, Q::Permeability}));
+  EXPECT_EQ(fields(R"(["effective_stress", "flux", "pressure"])"),
+            (std::vector<Q>{Q::Pressure, Q::EffectiveStress, Q::Flux}));
+  // --set takes the list as TOML.
+  EXPECT_EQ(parse_case(kMinimalCase, "x.toml", {R"(output.fields=["flux"])"}).output.fields,
+            std::vector<Q>{Q::Flux});
+
+  // Reported as given: true for the default set, false for none, else the names.
+  const auto reported = [](const std::string& value) {
+    const Config c = parse_case(kMinimalCase + "[output]\nfields = " + value + "\n", "x.toml");
+    return config_to_json(c)["output"]["fields"];
+  };
+  EXPECT_EQ(reported("true"), nlohmann::json(true));
+  EXPECT_EQ(reported(R"(["pressure", "displacement"])"), nlohmann::json(true));
+  EXPECT_EQ(reported("[]"), nlohmann::json(false));
+  EXPECT_EQ(reported(R"(["J", "stress"])"), nlohmann::json({"stress", "J"}));
+
+  const auto problems = problems_of(kMinimalCase + "[output]\nfields = [\"stress\", \"strain\"]\n");
+  EXPECT_TRUE(has_problem(problems, {"output.fields = [\"stress\", \"strain\"]",
+                                     "\"strain\" is not one of displacement, pressure, stress, "
+                                     "effective_stress, J, flux, permeability"}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + "[output]\nfields = [\"J\", \"J\"]\n"),
+                          {"output.fields", "\"J\" is listed twice"}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + "[output]\nfields = \"stress\"\n"),
+                          {"output.fields = \"stress\"", "expected true or false, or an array"}));
 }
 
 TEST(CaseFile, IntegersAcceptedForNumbersButNotTheReverse) {

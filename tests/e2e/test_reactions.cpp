@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "../common/uniaxial_column.hpp"
 #include "biphasic/analytic/confined_compression.hpp"
 #include "biphasic/app/run.hpp"
 #include "biphasic/io/case_file.hpp"
@@ -24,24 +25,9 @@ constexpr double kMu = 0.5, kLambda = 0.3, kPressure = 0.05;  // MPa
 constexpr double kWidth = 1.0, kDepth = 1.5, kHeight = 2.0;   // mm
 constexpr double kStretch = 1.2;                              // λ_z at t = 1 s
 
-// Every vertex of a one-cell-wide column lies on its boundary, so p = p0 on all faces fixes a
-// uniform pressure; rollers on the sides and the top pulled up to λ_z give F = diag(1, 1, λ_z).
 std::string column_case() {
   std::ostringstream s;
-  s << "format_version = 1\n"
-    << "[mesh]\nsource = \"column\"\n"
-    << "[mesh.column]\nwidth = " << kWidth << "\ndepth = " << kDepth << "\nheight = " << kHeight
-    << "\nnz = 2\n"
-    << "[material]\nmu = " << kMu << "\nlambda = " << kLambda << "\npermeability = 1e-3\n"
-    << "[curves]\nramp = [[0.0, 0.0], [1.0, 1.0]]\n"
-    << "[[boundary]]\nname = \"top\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = "
-    << (kStretch - 1.0) * kHeight << "\ncurve = \"ramp\"\n"
-    << "[[boundary]]\nname = \"bottom\"\ntype = \"displacement\"\ncomponent = \"z\"\nvalue = 0\n";
-  for (const char* face : {"x0", "x1", "y0", "y1"})
-    s << "[[boundary]]\nname = \"" << face << "\"\ntype = \"symmetry\"\n";
-  for (const char* face : {"top", "bottom", "x0", "x1", "y0", "y1"})
-    s << "[[boundary]]\nname = \"" << face << "\"\ntype = \"pressure\"\nvalue = " << kPressure
-      << "\n";
+  s << test::uniaxial_column_case({kMu, kLambda, kPressure, kStretch, kWidth, kDepth, kHeight});
   s << "[time]\nt_end = 1.0\ndt = 1.0\n"
     << "[linear_solver]\ntype = \"klu\"\nordering = \"amd\"\n"
     << "[output]\nline_start = [0, 0, 0]\nline_end = [0, 0, " << kHeight << "]\nfields = false\n"

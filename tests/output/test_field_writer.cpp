@@ -18,6 +18,7 @@
 #include <system_error>
 #include <vector>
 
+#include "../common/h5_reader.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "cube_mesh.hpp"
 
@@ -25,6 +26,7 @@ namespace biphasic {
 namespace {
 
 namespace fs = std::filesystem;
+using test::H5Reader;
 
 constexpr double kEdge = 2.0;  // cube edge length [mm]
 
@@ -50,66 +52,6 @@ std::string read_text(const fs::path& path) {
   ss << in.rdbuf();
   return ss.str();
 }
-
-/// Opens an HDF5 file read-only and closes it at scope exit.
-struct H5Reader {
-  explicit H5Reader(const fs::path& path) {
-    file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (file < 0) throw std::runtime_error("cannot open " + path.string());
-  }
-  ~H5Reader() { H5Fclose(file); }
-  H5Reader(const H5Reader&) = delete;
-  H5Reader& operator=(const H5Reader&) = delete;
-
-  /// True if every component of the absolute path exists.
-  bool exists(const std::string& path) const {
-    std::string prefix;
-    std::size_t pos = 1;
-    while (pos <= path.size()) {
-      const std::size_t next = std::min(path.find('/', pos), path.size());
-      prefix = path.substr(0, next);
-      if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
-      pos = next + 1;
-    }
-    return true;
-  }
-
-  std::vector<hsize_t> dims(const std::string& path) const {
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    if (set < 0) throw std::runtime_error("no dataset " + path);
-    const hid_t space = H5Dget_space(set);
-    std::vector<hsize_t> d(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
-    H5Sget_simple_extent_dims(space, d.data(), nullptr);
-    H5Sclose(space);
-    H5Dclose(set);
-    return d;
-  }
-
-  template <typename T>
-  std::vector<T> read(const std::string& path, hid_t mem_type) const {
-    std::size_t count = 1;
-    for (hsize_t d : dims(path)) count *= static_cast<std::size_t>(d);
-    std::vector<T> data(count);
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    const herr_t status = H5Dread(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-    H5Dclose(set);
-    if (status < 0) throw std::runtime_error("cannot read " + path);
-    return data;
-  }
-
-  double time_attribute(const std::string& path) const {
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    const hid_t attr = H5Aopen(set, "time", H5P_DEFAULT);
-    double t = std::nan("");
-    const herr_t status = H5Aread(attr, H5T_NATIVE_DOUBLE, &t);
-    H5Aclose(attr);
-    H5Dclose(set);
-    if (status < 0) throw std::runtime_error("cannot read time of " + path);
-    return t;
-  }
-
-  hid_t file = -1;
-};
 
 /// What an XDMF file says: its time values, and for every DataItem whether the referenced
 /// dataset exists in the HDF5 file (resolved relative to the XDMF folder) with the stated shape.
@@ -435,6 +377,148 @@ TEST(FieldWriter, FailsWithPathWhenFolderCannotBeCreated) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("file/sub"), std::string::npos) << e.what();
   }
+}
+
+/// Cell values with distinct, non-round entries: `components` per cell of `mesh`.
+std::vector<double> make_cells(const Mesh& mesh, int components, double scale) {
+  std::vector<double> v(static_cast<std::size_t>(components) * mesh.tets.size());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = scale * (1.0 / 7.0 + static_cast<double>(i));
+  return v;
+}
+
+/// A layout of cell fields only: a tensor, a scalar and a vector.
+FieldLayout cell_layout() {
+  FieldLayout layout;
+  layout.displacement = false;
+  layout.pressure = false;
+  layout.cells = {{"stress", 9, "MPa"}, {"J", 1, "-"}, {"flux", 3, "mm/s"}};
+  return layout;
+}
+
+TEST(FieldWriter, WritesCellFieldsAsCellAttributes) {
+  const Mesh mesh = test::make_cube_mesh(kEdge);
+  const TempDir dir_tmp("cells");
+  const fs::path& dir = dir_tmp.path;
+  const std::vector<double> times{0.0, 2.0};
+  std::vector<std::vector<std::vector<double>>> values;
+  {
+    FieldWriter writer(dir.string(), "run", mesh, cell_layout());
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      const double scale = 1.0 + static_cast<double>(i);
+      values.push_back({make_cells(mesh, 9, scale), make_cells(mesh, 1, -scale),
+                        make_cells(mesh, 3, 0.5 * scale)});
+      // Displacement and pressure are not in the layout: their arguments are not read.
+      writer.write(times[i], {}, {}, values.back());
+    }
+  }
+  const XdmfCheck check = check_xdmf(dir / "run.xdmf");
+  EXPECT_EQ(check.times, times);
+  EXPECT_EQ(check.data_items, 2 * (2 + 3));  // topology, geometry, three cell fields
+  EXPECT_EQ(check.bad_references, 0);
+  const std::string xdmf = read_text(dir / "run.xdmf");
+  for (
+      const char* attribute :
+      {R"(<Attribute Name="stress" AttributeType="Tensor" Center="Cell">)",
+       R"(<Attribute Name="J" AttributeType="Scalar" Center="Cell">)",
+       R"(<Attribute Name="flux" AttributeType="Vector" Center="Cell">)",
+       R"(<DataItem Dimensions="6 9" NumberType="Float" Precision="8" Format="HDF">run.h5:/fields/stress/1</DataItem>)",
+       R"(<DataItem Dimensions="6" NumberType="Float" Precision="8" Format="HDF">run.h5:/fields/J/1</DataItem>)",
+       R"(<DataItem Dimensions="6 3" NumberType="Float" Precision="8" Format="HDF">run.h5:/fields/flux/0</DataItem>)"}) {
+    EXPECT_NE(xdmf.find(attribute), std::string::npos) << attribute << " missing in\n" << xdmf;
+  }
+  EXPECT_EQ(xdmf.find("displacement"), std::string::npos);
+  EXPECT_EQ(xdmf.find("pressure"), std::string::npos);
+
+  const H5Reader h5(dir / "run.h5");
+  EXPECT_FALSE(h5.exists("/fields/displacement"));
+  EXPECT_FALSE(h5.exists("/fields/pressure"));
+  EXPECT_FALSE(h5.exists("/fields/pressure_vertices"));
+  const std::vector<std::pair<std::string, std::vector<hsize_t>>> shapes{
+      {"stress", {6, 9}}, {"J", {6}}, {"flux", {6, 3}}};
+  const std::vector<std::string> units{"MPa", "-", "mm/s"};
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    for (std::size_t f = 0; f < shapes.size(); ++f) {
+      const std::string path = "/fields/" + shapes[f].first + "/" + std::to_string(i);
+      EXPECT_EQ(h5.dims(path), shapes[f].second) << path;
+      EXPECT_EQ(h5.read<double>(path, H5T_NATIVE_DOUBLE), values[i][f]) << path;
+      EXPECT_EQ(h5.time_attribute(path), times[i]) << path;
+      EXPECT_EQ(h5.string_attribute(path, "units"), units[f]) << path;
+    }
+  }
+}
+
+TEST(FieldWriter, RefusesBadCellFields) {
+  const Mesh mesh = test::make_cube_mesh(kEdge);
+  const TempDir dir_tmp("bad_cells");
+  const std::string dir = dir_tmp.path.string();
+  const auto refused = [&](std::vector<CellFieldSpec> cells, const std::string& expected) {
+    FieldLayout layout;
+    layout.cells = std::move(cells);
+    try {
+      FieldWriter writer(dir, "x", mesh, layout);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).find(expected) != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused({{"pressure", 1, "MPa"}}, "'pressure' clashes"));
+  EXPECT_TRUE(refused({{"J", 1, "-"}, {"J", 1, "-"}}, "'J' clashes"));
+  EXPECT_TRUE(refused({{"times", 1, "s"}}, "'times' clashes"));
+  EXPECT_TRUE(refused({{"a/b", 1, "-"}}, "invalid cell field name 'a/b'"));
+  EXPECT_TRUE(refused({{"", 1, "-"}}, "invalid cell field name"));
+  EXPECT_TRUE(refused({{"c", 2, "-"}}, "'c' has 2 components"));
+  FieldWriter symmetric(dir, "t6", mesh, {false, false, {{"s", 6, "MPa"}}});
+  symmetric.write(0.0, {}, {}, {make_cells(mesh, 6, 1.0)});
+  EXPECT_NE(read_text(dir_tmp.path / "t6.xdmf").find(R"(Name="s" AttributeType="Tensor6")"),
+            std::string::npos);
+
+  FieldWriter writer(dir, "sizes", mesh, cell_layout());
+  try {
+    writer.write(0.0, {}, {},
+                 {make_cells(mesh, 9, 1.0), make_cells(mesh, 3, 1.0), make_cells(mesh, 3, 1.0)});
+    FAIL() << "expected an exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("J has 18 entries, expected 1 x 6 cells = 6"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(writer.write(0.0, {}, {}, {make_cells(mesh, 9, 1.0)}), std::runtime_error);
+  EXPECT_EQ(writer.num_outputs(), 0u);
+}
+
+TEST(FieldWriter, RestartDropsLaterCellFieldsAndAppends) {
+  const Mesh mesh = test::make_cube_mesh(kEdge);
+  const TempDir dir_tmp("cells_restart");
+  const std::string dir = dir_tmp.path.string();
+  FieldLayout layout = cell_layout();
+  layout.pressure = true;
+  const auto cells = [&](double s) {
+    return std::vector<std::vector<double>>{make_cells(mesh, 9, s), make_cells(mesh, 1, s),
+                                            make_cells(mesh, 3, s)};
+  };
+  {
+    FieldWriter first(dir, "f", mesh, layout);
+    for (double t : {0.0, 1.0, 2.0}) first.write(t, {}, make_p(mesh, t), cells(t));
+  }
+  {
+    FieldWriter again(dir, "f", mesh, 1.0, layout);
+    EXPECT_EQ(again.times(), (std::vector<double>{0.0, 1.0}));
+    const H5Reader h5(dir_tmp.path / "f.h5");
+    for (const char* group : {"stress", "J", "flux", "pressure", "pressure_vertices"}) {
+      EXPECT_TRUE(h5.exists("/fields/" + std::string(group) + "/1")) << group;
+      EXPECT_FALSE(h5.exists("/fields/" + std::string(group) + "/2")) << group;
+    }
+  }
+  {
+    FieldWriter again(dir, "f", mesh, 1.0, layout);
+    again.write(1.5, {}, make_p(mesh, 1.5), cells(1.5));
+  }
+  const XdmfCheck check = check_xdmf(dir_tmp.path / "f.xdmf");
+  EXPECT_EQ(check.times, (std::vector<double>{0.0, 1.0, 1.5}));
+  EXPECT_EQ(check.data_items, 3 * (2 + 4));
+  EXPECT_EQ(check.bad_references, 0);
+  const H5Reader h5(dir_tmp.path / "f.h5");
+  EXPECT_EQ(h5.read<double>("/fields/flux/2", H5T_NATIVE_DOUBLE), make_cells(mesh, 3, 1.5));
 }
 
 }  // namespace

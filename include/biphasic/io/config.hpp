@@ -199,13 +199,32 @@ struct ProbeConfig {
   int points = 0;
 };
 
+/// What the field output (fields.h5, fields.xdmf; docs/output_fields.md) can hold, in the order
+/// it is written.
+enum class FieldQuantity {
+  Displacement,     ///< u on the P2 nodes [mm]
+  Pressure,         ///< p on the vertices and interpolated on every P2 node [MPa]
+  Stress,           ///< total Cauchy stress σ = σ_eff − p I, per element [MPa]
+  EffectiveStress,  ///< effective Cauchy stress σ_eff = J⁻¹ P_eff Fᵀ, per element [MPa]
+  J,                ///< volume ratio J = det F, per element
+  Flux,             ///< Darcy flux w = −k(J) ∇ₓp relative to the solid, per element [mm/s]
+  Permeability,     ///< k(J), per element [mm⁴ N⁻¹ s⁻¹]
+};
+
+/// The field quantities of `output.fields = true`, the default: displacement and pressure.
+inline std::vector<FieldQuantity> default_field_quantities() {
+  return {FieldQuantity::Displacement, FieldQuantity::Pressure};
+}
+
 struct OutputConfig {
   std::array<double, 3> line_start{0.0, 0.0, 0.0};  ///< probe line [mm]
   std::array<double, 3> line_end{0.0, 0.0, 8.0};
   int line_points = 0;  ///< sampling of the probe line, as ProbeConfig::points
   int every = 1;        ///< write outputs every n steps (and always the last)
-  bool fields = true;   ///< HDF5/XDMF fields
-  bool line = true;     ///< probe line: line.csv and the oscillation measures
+  /// Quantities of the HDF5/XDMF field output, distinct and in FieldQuantity order; empty = no
+  /// field files.
+  std::vector<FieldQuantity> fields = default_field_quantities();
+  bool line = true;  ///< probe line: line.csv and the oscillation measures
   /// Boundaries whose reaction forces are written (reactions.csv and the summary): the force
   /// their displacement and symmetry conditions exert on the body [N].
   std::vector<std::string> reactions;
@@ -225,6 +244,7 @@ struct ConstraintsConfig {
 std::string to_string(BcType type);
 std::string to_string(Ordering ordering);
 std::string to_string(FactorPrecision precision);
+std::string to_string(FieldQuantity quantity);
 
 struct Config {
   std::string case_file;  ///< path of the case file read

@@ -22,18 +22,36 @@ std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh);
 std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& edges,
                                       const std::vector<double>& p_vertices);
 
-/// Writes the displacement [mm] and pressure [MPa] of a run to `<directory>/<stem>.h5` and keeps
-/// `<directory>/<stem>.xdmf` (XDMF 3 temporal collection, Tetrahedron_10 cells) up to date.
+/// A field with one value, vector or symmetric tensor per tetrahedron (XDMF Center="Cell").
+struct CellFieldSpec {
+  std::string name;  ///< HDF5 group /fields/<name> and XDMF attribute name
+  /// 1 Scalar, 3 Vector (x, y, z), 6 Tensor6 (xx, xy, xz, yy, yz, zz), 9 Tensor (row by row:
+  /// xx, xy, xz, yx, yy, yz, zx, zy, zz)
+  int components = 1;
+  std::string units;  ///< the datasets' `units` attribute ("-" if dimensionless)
+};
+
+/// What a FieldWriter writes at every output: the nodal displacement and pressure (each
+/// optional) and any cell fields, in this order.
+struct FieldLayout {
+  bool displacement = true;
+  bool pressure = true;  ///< /fields/pressure and /fields/pressure_vertices
+  std::vector<CellFieldSpec> cells;
+};
+
+/// Writes the fields of a run to `<directory>/<stem>.h5` and keeps `<directory>/<stem>.xdmf`
+/// (XDMF 3 temporal collection, Tetrahedron_10 cells) up to date.
 ///
 /// HDF5 layout:
 ///   /mesh/coordinates               N×3 double [mm]
 ///   /mesh/topology                  E×10 int64 (Tetrahedron_10 node order)
 ///   /mesh/vertex_count              scalar int64 (the first vertex_count nodes are corners)
 ///   /fields/times                   extensible 1-D double [s], one entry per output
-///   /fields/displacement/<i>        N×3 double [mm]
+///   /fields/displacement/<i>        N×3 double [mm]                    (layout.displacement)
 ///   /fields/pressure/<i>            N double [MPa], P1 pressure evaluated on all P2 nodes
-///   /fields/pressure_vertices/<i>   num_vertices double [MPa]
-/// Every field dataset carries a `time` attribute [s].
+///   /fields/pressure_vertices/<i>   num_vertices double [MPa]          (both: layout.pressure)
+///   /fields/<cell field>/<i>        E×components double (E double for a scalar)
+/// Every field dataset carries a `time` attribute [s] and a `units` attribute.
 ///
 /// After each write() the HDF5 file is flushed and the XDMF file is replaced atomically (written
 /// to a temporary and renamed), so a run killed between outputs leaves a readable pair. Paths
@@ -41,28 +59,37 @@ std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& e
 /// replaced.
 class FieldWriter {
  public:
-  /// Creates `directory` if needed and writes the mesh. Throws std::runtime_error on failure.
-  FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh);
+  /// Creates `directory` if needed and writes the mesh. Throws std::runtime_error on failure,
+  /// and std::invalid_argument for a cell field named like another field (or "times"), with a
+  /// name that is empty or holds '/', or with other than 1, 3 or 6 components.
+  FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+              FieldLayout layout = {});
   /// Continues the files an earlier run of the same mesh left in `directory` (a restart):
   /// outputs at times after `keep_until` [s] are deleted, later writes append. Throws
   /// std::runtime_error if the file is missing, unreadable or of another mesh.
   FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
-              double keep_until);
+              double keep_until, FieldLayout layout = {});
   ~FieldWriter();
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
 
   /// Appends output number num_outputs() at time `t` [s]. `u` is node-major, size 3·num_nodes
-  /// (u[3n+c], mm); `p_vertices` has one pressure per vertex [MPa].
-  void write(double t, const std::vector<double>& u, const std::vector<double>& p_vertices);
+  /// (u[3n+c], mm); `p_vertices` has one pressure per vertex [MPa] (each read only if the
+  /// layout writes it). `cells` holds the layout's cell fields in its order, element-major
+  /// (value[components·e + c]).
+  void write(double t, const std::vector<double>& u, const std::vector<double>& p_vertices,
+             const std::vector<std::vector<double>>& cells = {});
 
   std::size_t num_outputs() const { return times_.size(); }
   const std::vector<double>& times() const { return times_; }  ///< output times [s]
   const std::string& h5_path() const { return h5_path_; }
   const std::string& xdmf_path() const { return xdmf_path_; }
+  const FieldLayout& layout() const { return layout_; }
 
  private:
   void write_xdmf() const;
+  /// The HDF5 groups below /fields that the layout writes into.
+  std::vector<std::string> groups() const;
 
   std::string stem_;
   std::string h5_path_;
@@ -73,6 +100,7 @@ class FieldWriter {
   Index num_tets_ = 0;
   std::vector<std::array<Index, 2>> edges_;  ///< edge node → vertex pair
   std::vector<double> times_;
+  FieldLayout layout_;
 };
 
 }  // namespace biphasic

@@ -71,6 +71,10 @@ class BiphasicProblem final : public SemidiscreteSystem {
   /// dF/dẏ alone into it (same pattern; zero on Dirichlet rows) from the same element pass.
   void jacobian(double t, const double* y, const double* ydot, double cj, double* values,
                 double* rate_values = nullptr) override;
+  /// The quadrature-point geometry of element e (reference configuration).
+  const std::vector<PointGeometry>& point_geometry(Index e) const { return geometry_[e]; }
+  /// The material laws of the case.
+  const MaterialLaws& laws() const { return laws_; }
   /// The element kernel's output for element e at the global state (for tests).
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;

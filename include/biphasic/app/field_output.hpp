@@ -1,0 +1,38 @@
+// The field output of a run (fields.h5, fields.xdmf; docs/output_fields.md): the quantities
+// output.fields selects, the nodal ones as solved, the element ones recovered from the state.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "biphasic/io/config.hpp"
+#include "biphasic/io/field_writer.hpp"
+
+namespace biphasic {
+
+class BiphasicProblem;
+
+/// The writer's layout for `quantities`: displacement and pressure as nodal fields, the others
+/// as cell fields named as in the case file, in FieldQuantity order.
+FieldLayout field_layout(const std::vector<FieldQuantity>& quantities);
+
+/// Writes the selected quantities of each output state.
+class FieldOutput {
+ public:
+  /// New files in `directory`, or with `keep_until` the files of the run being restarted,
+  /// outputs after that time [s] dropped (FieldWriter). `quantities` must not be empty.
+  FieldOutput(const std::vector<FieldQuantity>& quantities, const std::string& directory,
+              const Mesh& mesh, std::optional<double> keep_until);
+
+  /// Appends the state `y` (the problem's unknowns) at time `t` [s].
+  void write(const BiphasicProblem& problem, double t, const std::vector<double>& y);
+
+  const FieldWriter& writer() const { return writer_; }
+
+ private:
+  std::vector<FieldQuantity> cell_quantities_;  ///< in the layout's order
+  FieldWriter writer_;
+};
+
+}  // namespace biphasic
