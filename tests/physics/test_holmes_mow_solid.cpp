@@ -207,5 +207,20 @@ TEST(HolmesMowSolid, ZeroBetaIsTheLimit) {
   EXPECT_GT(zero.energy(F), 0.0);
 }
 
+TEST(HolmesMowSolid, RegistryBuildsTheChosenSolid) {
+  MaterialConfig c;
+  c.solid_law = SolidLawType::HolmesMow;
+  c.youngs_modulus = 0.6;
+  c.poissons_ratio = 0.1;
+  c.beta = 0.4;
+  const MaterialLaws laws = make_material_laws(c);
+  ASSERT_TRUE(std::holds_alternative<HolmesMowSolid>(laws.solid));
+  const auto& m = std::get<HolmesMowSolid>(laws.solid);
+  EXPECT_EQ(m.E, 0.6);
+  EXPECT_EQ(m.nu, 0.1);
+  EXPECT_EQ(m.beta, 0.4);
+  EXPECT_DOUBLE_EQ(laws.p_wave_modulus(), 0.6 * 0.9 / (1.1 * 0.8));
+}
+
 }  // namespace
 }  // namespace biphasic
