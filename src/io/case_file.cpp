@@ -760,6 +760,22 @@ void check_permeability_law_keys(const toml::table& root, const Config& config,
                                config.material.permeability_law, rules);
 }
 
+/// The parameters of the solid law not chosen (they would be ignored): errors naming the key.
+void check_solid_law_keys(const toml::table& root, const Config& config, Problems& problems) {
+  using L = SolidLawType;
+  constexpr const char* kNeo = "material.solid_law = \"neo_hookean\"";
+  constexpr const char* kHm = "material.solid_law = \"holmes_mow\"";
+  static const std::vector<OwnedKey<L>> rules{
+      {"material.lambda", {L::NeoHookean}, kNeo},
+      {"material.mu", {L::NeoHookean}, kNeo},
+      {"material.youngs_modulus", {L::HolmesMow}, kHm},
+      {"material.poissons_ratio", {L::HolmesMow}, kHm},
+      {"material.beta", {L::HolmesMow}, kHm},
+  };
+  refuse_keys_of_other_choices(root, problems, "material.solid_law", "\"neo_hookean\"",
+                               config.material.solid_law, rules);
+}
+
 /// Keys that belong to one or more mesh sources: given with another generated source they would
 /// be silently ignored, so they are an error. (The quarter cylinder's keys are tolerated with
 /// mesh.source = "file", as they always were.)
@@ -861,6 +877,7 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
                         Problems& problems) {
   check_mesh_source_keys(root, config, problems);
   check_permeability_law_keys(root, config, problems);
+  check_solid_law_keys(root, config, problems);
   check_reaction_boundaries(root, config, problems);
   if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
       config.time.dt > config.time.t_end) {
@@ -890,8 +907,8 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
 
   const auto& material = config.material;
   const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
-  if (!problems.is_bad("material.lambda") && !problems.is_bad("material.mu") &&
-      !(bulk_like > 0.0)) {
+  if (material.solid_law == SolidLawType::NeoHookean && !problems.is_bad("material.lambda") &&
+      !problems.is_bad("material.mu") && !(bulk_like > 0.0)) {
     problems.bad_value(
         "material.lambda", shown_at(root, "material.lambda", format_number(material.lambda)),
         "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");

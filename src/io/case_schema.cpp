@@ -54,6 +54,12 @@ const Names<PermeabilityLawType>& permeability_law_names() {
   return names;
 }
 
+const Names<SolidLawType>& solid_law_names() {
+  static const Names<SolidLawType> names{{"neo_hookean", SolidLawType::NeoHookean},
+                                         {"holmes_mow", SolidLawType::HolmesMow}};
+  return names;
+}
+
 const Names<ElementLength>& element_length_names() {
   static const Names<ElementLength> names{{"circumradius", ElementLength::Circumradius},
                                           {"shortest_edge", ElementLength::ShortestEdge},
@@ -397,13 +403,32 @@ std::vector<Key<Config>> build_global_keys() {
       "Distance from the surface over which the element size grows back to lc.",
       [](auto& c) -> auto& { return c.mesh.sphere_octant.grading_distance; }));
 
+  keys.push_back(choice_key<C>(
+      "material.solid_law", solid_law_names(),
+      "Solid law of the skeleton: neo_hookean (material.lambda, material.mu) or holmes_mow "
+      "(Holmes & Mow 1990 as in FEBio: material.youngs_modulus, material.poissons_ratio, "
+      "material.beta). Keys of the other law are an error.",
+      [](auto& c) -> auto& { return c.material.solid_law; }));
   keys.push_back(number_key<C>(
       "material.lambda", Range{}, "MPa",
-      "Lamé constant lambda of the solid skeleton; lambda + 2/3 mu must be > 0.",
+      "Lamé constant lambda of the neo_hookean solid; lambda + 2/3 mu must be > 0.",
       [](auto& c) -> auto& { return c.material.lambda; }));
   keys.push_back(number_key<C>(
-      "material.mu", above(0), "MPa", "Shear modulus mu.",
+      "material.mu", above(0), "MPa", "Shear modulus mu of the neo_hookean solid.",
       [](auto& c) -> auto& { return c.material.mu; }));
+  keys.push_back(number_key<C>(
+      "material.youngs_modulus", above(0), "MPa",
+      "Young's modulus E of the holmes_mow solid (small-strain limit).",
+      [](auto& c) -> auto& { return c.material.youngs_modulus; }));
+  keys.push_back(number_key<C>(
+      "material.poissons_ratio", strictly_between(-1, 0.5), "",
+      "Poisson's ratio nu of the holmes_mow solid (small-strain limit).",
+      [](auto& c) -> auto& { return c.material.poissons_ratio; }));
+  keys.push_back(number_key<C>(
+      "material.beta", at_least(0), "",
+      "Exponential stiffening coefficient beta of the holmes_mow solid, W = H_A/(4 beta) "
+      "(exp(Q) - 1); beta = 0 is the limit W = q/4 (no stiffening).",
+      [](auto& c) -> auto& { return c.material.beta; }));
   keys.push_back(number_key<C>(
       "material.permeability", above(0), "mm^4/(N s)",
       "Permeability k of the solid skeleton; with a strain-dependent law, k0 = k(J = 1).",

@@ -25,10 +25,16 @@ AnyPermeabilityLaw make_permeability_law(const MaterialConfig& m) {
   return ConstantPermeability{m.permeability};
 }
 
+AnySolidLaw make_solid_law(const MaterialConfig& m) {
+  if (m.solid_law == SolidLawType::HolmesMow)
+    return HolmesMowSolid{m.youngs_modulus, m.poissons_ratio, m.beta};
+  return NeoHookean{m.lambda, m.mu};
+}
+
 }  // namespace
 
 MaterialLaws make_material_laws(const MaterialConfig& material) {
-  return {NeoHookean{material.lambda, material.mu}, make_permeability_law(material)};
+  return {make_solid_law(material), make_permeability_law(material)};
 }
 
 }  // namespace biphasic

@@ -865,3 +865,86 @@ solid_fraction = 1.0
 
 }  // namespace
 }  // namespace biphasic
+
+namespace biphasic {
+namespace {
+
+using testing_support::has_problem;
+using testing_support::kMinimalCase;
+using testing_support::problems_of;
+
+// The solid law: neo_hookean by default; holmes_mow with E, nu, beta and their defaults.
+TEST(CaseFile, SolidLawAndItsParameters) {
+  const Config neo = parse_case(kMinimalCase, "cases/x.toml", {}, ".");
+  EXPECT_EQ(neo.material.solid_law, SolidLawType::NeoHookean);
+  const Config c = parse_case(kMinimalCase + R"(
+[material]
+solid_law = "holmes_mow"
+youngs_modulus = 0.7
+poissons_ratio = -0.2
+beta = 0.35
+)",
+                              "cases/x.toml", {}, ".");
+  EXPECT_EQ(c.material.solid_law, SolidLawType::HolmesMow);
+  EXPECT_EQ(c.material.youngs_modulus, 0.7);
+  EXPECT_EQ(c.material.poissons_ratio, -0.2);
+  EXPECT_EQ(c.material.beta, 0.35);
+  const Config d = parse_case(kMinimalCase + "[material]\nsolid_law = \"holmes_mow\"\n",
+                              "cases/x.toml", {}, ".");
+  EXPECT_EQ(d.material.youngs_modulus, 1.0);
+  EXPECT_EQ(d.material.poissons_ratio, 0.2);
+  EXPECT_EQ(d.material.beta, 0.0);
+  const Config set = parse_case(kMinimalCase, "cases/x.toml",
+                                {"material.solid_law=holmes_mow", "material.beta=2"}, ".");
+  EXPECT_EQ(set.material.solid_law, SolidLawType::HolmesMow);
+  EXPECT_EQ(set.material.beta, 2.0);
+}
+
+// Keys of the law not chosen are errors naming the key and both laws.
+TEST(CaseFile, KeysOfTheOtherSolidLawAreRefused) {
+  const auto lame = problems_of(kMinimalCase + R"(
+[material]
+solid_law = "holmes_mow"
+lambda = 0.2
+mu = 0.5
+youngs_modulus = 1.0
+)");
+  ASSERT_EQ(lame.size(), 2u);
+  EXPECT_TRUE(has_problem(
+      lame, {"material.lambda = 0.2", "applies only to material.solid_law = \"neo_hookean\"",
+             "not to material.solid_law = \"holmes_mow\""}));
+  EXPECT_TRUE(has_problem(lame, {"material.mu = 0.5", "not to material.solid_law"}));
+  const auto hm = problems_of(kMinimalCase + "[material]\nyoungs_modulus = 1.0\nbeta = 0.1\n");
+  ASSERT_EQ(hm.size(), 2u);
+  EXPECT_TRUE(has_problem(
+      hm, {"material.youngs_modulus = 1.0", "applies only to material.solid_law = \"holmes_mow\"",
+           "not to material.solid_law = \"neo_hookean\""}));
+  EXPECT_TRUE(has_problem(hm, {"material.beta = 0.1"}));
+  const auto nu = problems_of(kMinimalCase + R"(
+[material]
+solid_law = "neo_hookean"
+poissons_ratio = 0.3
+)");
+  EXPECT_TRUE(has_problem(nu, {"material.poissons_ratio = 0.3", "\"neo_hookean\""}));
+  const auto bad = problems_of(kMinimalCase + "[material]\nsolid_law = \"mooney\"\n");
+  EXPECT_TRUE(has_problem(bad, {"material.solid_law", "mooney", "holmes_mow"}));
+}
+
+// Ranges: E > 0, nu in (-1, 0.5), beta >= 0.
+TEST(CaseFile, HolmesMowParameterRanges) {
+  auto problems = [](const std::string& key_value) {
+    return problems_of(kMinimalCase + "[material]\nsolid_law = \"holmes_mow\"\n" + key_value +
+                       "\n");
+  };
+  EXPECT_TRUE(has_problem(problems("poissons_ratio = 0.5"),
+                          {"material.poissons_ratio", "0.5", "in (-1, 0.5)"}));
+  EXPECT_TRUE(has_problem(problems("poissons_ratio = -1.0"), {"material.poissons_ratio"}));
+  EXPECT_TRUE(has_problem(problems("youngs_modulus = 0.0"), {"material.youngs_modulus", "> 0"}));
+  EXPECT_TRUE(has_problem(problems("beta = -0.1"), {"material.beta", ">= 0"}));
+  const std::string valid =
+      kMinimalCase + "[material]\nsolid_law = \"holmes_mow\"\npoissons_ratio = 0.49\nbeta = 0.0\n";
+  EXPECT_EQ(parse_case(valid, "cases/x.toml", {}, ".").material.poissons_ratio, 0.49);
+}
+
+}  // namespace
+}  // namespace biphasic

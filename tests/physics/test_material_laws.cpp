@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -34,12 +35,12 @@ struct Block {
 const Block kBlocks[] = {
     {"u-u", 0, 30, 0, 30}, {"u-p", 0, 30, 30, 4}, {"p-u", 30, 4, 0, 30}, {"p-p", 30, 4, 30, 4}};
 
-/// Relative error per block of the Jacobian ∂R/∂y of `Law` against central differences with
-/// steps ε and ε/2.
-template <class Law>
-std::vector<std::pair<double, double>> block_errors(const Law& law, const ElementCoefficients& c) {
+/// Relative error per block of the Jacobian ∂R/∂y with the permeability law `Law` and the solid
+/// law `solid` against central differences with steps ε and ε/2.
+template <class Law, class Solid = NeoHookean>
+std::vector<std::pair<double, double>> block_errors(const Law& law, const ElementCoefficients& c,
+                                                    const Solid& solid = NeoHookean{0.2, 0.5}) {
   const std::vector<PointGeometry> geo = test::distorted_tet_geometry();
-  const NeoHookean solid{0.2, 0.5};
   ElementVector y, ydot;
   test::random_state(7, 0.08, y, ydot);
   ElementOutput exact, plus, minus;
@@ -66,6 +67,20 @@ std::vector<std::pair<double, double>> block_errors(const Law& law, const Elemen
   return errors;
 }
 
+/// Every block's error below 1e-5 at ε/2 and falling as ε² (ratio ≈ 4 per halving) unless at
+/// round-off; `label` names the case in failures.
+void expect_second_order(const std::vector<std::pair<double, double>>& errors,
+                         const std::string& label) {
+  for (std::size_t n = 0; n < errors.size(); ++n) {
+    const auto [e1, e2] = errors[n];
+    EXPECT_LT(e2, 1e-5) << label << " " << kBlocks[n].name;
+    if (e1 > 1e-9) {
+      EXPECT_NEAR(e1 / e2, 4.0, 0.4)
+          << label << " " << kBlocks[n].name << " e1=" << e1 << " e2=" << e2;
+    }
+  }
+}
+
 /// Stabilisation and volume-rate coefficients of one case, with a name for the test list.
 struct Coefficients {
   ElementCoefficients c;
@@ -76,14 +91,7 @@ class PermeabilityDerivative : public ::testing::TestWithParam<Coefficients> {};
 
 // Every block converges as ε² (ratio ≈ 4 per halving) or is at round-off.
 TEST_P(PermeabilityDerivative, JacobianMatchesCentralDifferencesBlockByBlock) {
-  const auto errors = block_errors(QuadraticPermeability{}, GetParam().c);
-  for (std::size_t n = 0; n < errors.size(); ++n) {
-    const auto [e1, e2] = errors[n];
-    EXPECT_LT(e2, 1e-5) << kBlocks[n].name;
-    if (e1 > 1e-9) {
-      EXPECT_NEAR(e1 / e2, 4.0, 0.4) << kBlocks[n].name << " e1=" << e1 << " e2=" << e2;
-    }
-  }
+  expect_second_order(block_errors(QuadraticPermeability{}, GetParam().c), GetParam().name);
 }
 
 // Without the dk/dJ term the p-u block is wrong at O(1), and with GLS, whose c_e = h²/(4k(J))
@@ -248,19 +256,44 @@ TEST(StrainDependentPermeability, ExponentialValuesAndDerivative) {
 // differences (the state's J lies in about [0.8, 1.2], far from phi0 = 0.2).
 TEST(StrainDependentPermeability, ElementJacobianMatchesCentralDifferences) {
   const ElementCoefficients cases[] = {{0.0, 0.0, 0.0}, {2.5, 0.0, 0.0}, {0.0, 0.35, 0.0}};
-  auto check = [](const std::vector<std::pair<double, double>>& errors, const char* law) {
-    for (std::size_t n = 0; n < errors.size(); ++n) {
-      const auto [e1, e2] = errors[n];
-      EXPECT_LT(e2, 1e-5) << law << " " << kBlocks[n].name;
-      if (e1 > 1e-9) {
-        EXPECT_NEAR(e1 / e2, 4.0, 0.4) << law << " " << kBlocks[n].name << " e1=" << e1;
-      }
-    }
-  };
   for (const ElementCoefficients& c : cases) {
-    check(block_errors(kHolmesMow, c), "holmes_mow");
-    check(block_errors(kExponential, c), "exponential");
+    expect_second_order(block_errors(kHolmesMow, c), "holmes_mow");
+    expect_second_order(block_errors(kExponential, c), "exponential");
   }
+}
+
+/// The Holmes–Mow solid with the tangent of β = 0 (and the true stress): a wrong Jacobian.
+struct HolmesMowWithFlatTangent {
+  HolmesMowSolid law;
+  double p_wave_modulus() const { return law.p_wave_modulus(); }
+  HolmesMowSolid::Response response(const Mat3& F, double J) const {
+    HolmesMowSolid flat = law;
+    flat.beta = 0.0;
+    HolmesMowSolid::Response r = flat.response(F, J);
+    r.tau = law.response(F, J).tau;
+    return r;
+  }
+};
+static_assert(SolidLaw<HolmesMowWithFlatTangent>);
+
+// The element Jacobian with the Holmes–Mow solid, with constant and Holmes–Mow permeability,
+// without stabilisation, with GLS (incremental and conservative volume rate) and with the flux
+// perturbation, block by block against central differences; the same check fails with the
+// tangent of β = 0.
+TEST(HolmesMowSolid, ElementJacobianMatchesCentralDifferences) {
+  const HolmesMowSolid solid{1.2, 0.25, 0.9};
+  const ElementCoefficients cases[] = {
+      {0.0, 0.0, 0.0}, {2.5, 0.0, 0.0}, {2.5, 0.0, 5.0}, {0.0, 0.35, 0.0}};
+  const char* names[] = {"plain", "gls", "gls_conservative", "flux_perturbation"};
+  for (std::size_t n = 0; n < std::size(cases); ++n) {
+    const std::string name = names[n];
+    expect_second_order(block_errors(ConstantPermeability{2e-3}, cases[n], solid),
+                        "constant k, " + name);
+    expect_second_order(block_errors(kHolmesMow, cases[n], solid), "holmes_mow k, " + name);
+  }
+  const auto wrong = block_errors(kHolmesMow, cases[1], HolmesMowWithFlatTangent{solid});
+  EXPECT_GT(wrong[0].second, 1e-3);  // u-u
+  EXPECT_LT(wrong[3].second, 1e-5);  // p-p
 }
 
 TEST(StrainDependentPermeability, RegistryBuildsTheChosenLaw) {

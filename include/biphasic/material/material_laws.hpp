@@ -10,12 +10,13 @@
 #include "biphasic/material/constant_permeability.hpp"
 #include "biphasic/material/exponential_permeability.hpp"
 #include "biphasic/material/holmes_mow_permeability.hpp"
+#include "biphasic/material/holmes_mow_solid.hpp"
 #include "biphasic/material/neo_hookean.hpp"
 
 namespace biphasic {
 
 /// Every solid law of the skeleton the solver can run.
-using AnySolidLaw = std::variant<NeoHookean>;
+using AnySolidLaw = std::variant<NeoHookean, HolmesMowSolid>;
 /// Every permeability law the solver can run.
 using AnyPermeabilityLaw =
     std::variant<ConstantPermeability, HolmesMowPermeability, ExponentialPermeability>;
@@ -25,7 +26,7 @@ struct MaterialLaws {
   AnySolidLaw solid;
   AnyPermeabilityLaw permeability;
 
-  /// The solid's small-strain P-wave modulus H_A [MPa] (λ + 2μ for Neo-Hookean).
+  /// The solid's small-strain P-wave modulus H_A [MPa] (λ + 2μ of the law's small-strain limit).
   double p_wave_modulus() const;
   /// k(J = 1) [mm⁴ N⁻¹ s⁻¹], the permeability of the undeformed state: the scale of the GLS
   /// coefficient c_e = h²/(4k) and of the pressure rows.
