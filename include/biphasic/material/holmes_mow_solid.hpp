@@ -1,8 +1,8 @@
 // Holmes–Mow solid skeleton: the coupled, compressible, isotropic law of
 //   M. H. Holmes and V. C. Mow, "The nonlinear characteristics of soft gels and hydrated
 //   connective tissues in ultrafiltration", J. Biomech. 23(11):1145–1156 (1990),
-// in the form FEBio implements as material "Holmes-Mow" (FEBio User's Manual, section
-// "Holmes-Mow" under the uncoupled/compressible elastic solids; FEBio's FEHolmesMow.cpp):
+// in the form FEBio implements as its material "Holmes-Mow" (FEBio User's Manual, material
+// "Holmes-Mow"; FEBio source FEHolmesMow.cpp):
 //   λ = Eν/((1 + ν)(1 − 2ν)),  μ = E/(2(1 + ν)),  H_A = λ + 2μ                     [MPa]
 //   q = (2μ − λ)(I₁ − 3) + λ(I₂ − 3) − H_A ln I₃                                    [MPa]
 //   Q = β q / H_A,   W = H_A/(4β) (e^Q − 1)   (= ½ c (e^Q − 1), c = H_A/(2β))       [MPa]
