@@ -863,16 +863,6 @@ solid_fraction = 1.0
   EXPECT_TRUE(has_problem(phi, {"material.solid_fraction = 1.0"}));
 }
 
-}  // namespace
-}  // namespace biphasic
-
-namespace biphasic {
-namespace {
-
-using testing_support::has_problem;
-using testing_support::kMinimalCase;
-using testing_support::problems_of;
-
 // The solid law: neo_hookean by default; holmes_mow with E, nu, beta and their defaults.
 TEST(CaseFile, SolidLawAndItsParameters) {
   const Config neo = parse_case(kMinimalCase, "cases/x.toml", {}, ".");
