@@ -377,4 +377,31 @@ TEST(MeshReadGmsh, WrittenQuarterCylinderReadsBackWithCurvedEdgeNodes) {
   EXPECT_GT(smallest_sag, 0.0);  // horizontal chords cut inside the circle
 }
 
+TEST(MeshReadGmsh, PhysicalVolumesBecomeRegions) {
+  const Mesh mesh = biphasic::read_gmsh(fixture("two_regions_tet4_v22.msh"));
+  ASSERT_EQ(mesh.tets.size(), 2u);
+  ASSERT_EQ(mesh.region_names.size(), 2u);
+  ASSERT_EQ(mesh.tet_region.size(), 2u);
+  // The tet with node tag 1 (the origin) is the first tet of the file: "cartilage".
+  for (std::size_t t = 0; t < 2; ++t) {
+    bool has_origin = false;
+    for (int c = 0; c < 4; ++c) {
+      const Point& x = mesh.nodes[static_cast<std::size_t>(mesh.tets[t][c])];
+      has_origin = has_origin || (x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0);
+    }
+    EXPECT_EQ(mesh.region_names[static_cast<std::size_t>(mesh.region_of(static_cast<Index>(t)))],
+              has_origin ? "cartilage" : "9");
+  }
+  EXPECT_GE(mesh.find_region("cartilage"), 0);
+  EXPECT_GE(mesh.find_region("9"), 0);
+  EXPECT_EQ(mesh.find_region("bone"), -1);
+  EXPECT_NE(mesh.find_boundary("base"), nullptr);
+}
+
+TEST(MeshReadGmsh, OnePhysicalVolumeIsOneRegion) {
+  const Mesh mesh = biphasic::read_gmsh(fixture("inverted_tet4_v22.msh"));
+  EXPECT_EQ(mesh.region_names, std::vector<std::string>{"solid"});
+  EXPECT_EQ(mesh.tet_region, std::vector<int>{0});
+}
+
 }  // namespace
