@@ -650,7 +650,7 @@ line_end = [0, 0, 4]
   EXPECT_EQ(j["time"]["newton"].size(), 8u);
   EXPECT_EQ(j["time"]["newton"]["max_cutbacks"], 4);
   EXPECT_EQ(j["mesh"].size(), 15u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
-  EXPECT_EQ(j["mesh"]["column"].size(), 8u);
+  EXPECT_EQ(j["mesh"]["column"].size(), 10u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
   EXPECT_EQ(j["body_force"]["y"], "0");
