@@ -38,6 +38,23 @@ void check_column(const ConfinedRamp& c) {
   }
 }
 
+void check_layers(const ConfinedRamp& c) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < c.layers.size(); ++i) {
+    const ConfinedRamp::Layer& l = c.layers[i];
+    if (!(l.fraction > 0.0 && l.permeability > 0.0 && std::isfinite(l.permeability))) {
+      throw std::domain_error("confined ramp: layer " + std::to_string(i) + " has fraction " +
+                              std::to_string(l.fraction) +
+                              " and k0 = " + std::to_string(l.permeability) + "; both must be > 0");
+    }
+    sum += l.fraction;
+  }
+  if (!c.layers.empty() && !(std::abs(sum - 1.0) <= 1e-12)) {
+    throw std::domain_error("confined ramp: layer fractions sum to " + std::to_string(sum) +
+                            ", not 1");
+  }
+}
+
 bool constant_permeability(const ConfinedRamp& c) {
   return c.permeability_kappa == 0.0 && c.permeability_M == 0.0;
 }
@@ -128,8 +145,34 @@ class ColumnSolver {
     }
     Z[0] = 0.0;
     Z[n_ - 1] = c.thickness;
+    // Layers: the inner node nearest each interface moves onto it; each element then takes the
+    // factor k₀(layer)/k of the layer holding its midpoint.
+    std::vector<double> interfaces;
+    double below = 0.0;
+    for (std::size_t i = 0; i + 1 < c.layers.size(); ++i) {
+      below += c.layers[i].fraction * c.thickness;
+      interfaces.push_back(below);
+      std::size_t nearest = 1;
+      for (std::size_t j = 1; j + 1 < n_; ++j)
+        if (std::abs(Z[j] - below) < std::abs(Z[nearest] - below)) nearest = j;
+      Z[nearest] = below;
+    }
+    for (std::size_t j = 1; j < n_; ++j) {
+      if (!(Z[j] > Z[j - 1])) {
+        throw std::invalid_argument("confined ramp reference: " + std::to_string(cells) +
+                                    " cells cannot resolve the layers");
+      }
+    }
     len_.resize(n_ - 1);
-    for (std::size_t e = 0; e + 1 < n_; ++e) len_[e] = Z[e + 1] - Z[e];
+    factor_.assign(n_ - 1, 1.0);
+    for (std::size_t e = 0; e + 1 < n_; ++e) {
+      len_[e] = Z[e + 1] - Z[e];
+      if (c.layers.empty()) continue;
+      const double mid = 0.5 * (Z[e] + Z[e + 1]);
+      std::size_t layer = 0;
+      while (layer < interfaces.size() && mid > interfaces[layer]) ++layer;
+      factor_[e] = c.layers[layer].permeability / c.permeability;
+    }
     lam_.assign(n_, 1.0);
     prev_ = lam_;
     pot_.resize(n_);
@@ -178,13 +221,14 @@ class ColumnSolver {
       }
       for (std::size_t e = 0; e + 1 < n_; ++e) {
         const double L = len_[e];
-        const double flux = (pot_[e + 1] - pot_[e]) / L;
+        const double f = factor_[e];  // the layer's k₀/k scales the element's potential
+        const double flux = f * (pot_[e + 1] - pot_[e]) / L;
         r[e] -= flux;
         r[e + 1] += flux;
-        di[e] += a0 * L / 3.0 + dif_[e] / L;
-        di[e + 1] += a0 * L / 3.0 + dif_[e + 1] / L;
-        up[e] += a0 * L / 6.0 - dif_[e + 1] / L;
-        lo[e + 1] += a0 * L / 6.0 - dif_[e] / L;
+        di[e] += a0 * L / 3.0 + f * dif_[e] / L;
+        di[e + 1] += a0 * L / 3.0 + f * dif_[e + 1] / L;
+        up[e] += a0 * L / 6.0 - f * dif_[e + 1] / L;
+        lo[e + 1] += a0 * L / 6.0 - f * dif_[e] / L;
       }
       r[n_ - 1] -= q;
       for (double& v : r) v = -v;
@@ -215,7 +259,7 @@ class ColumnSolver {
 
   Column column_;
   std::size_t n_;
-  std::vector<double> len_, lam_, prev_, pot_, dif_;
+  std::vector<double> len_, factor_, lam_, prev_, pot_, dif_;
 };
 
 /// Time grid of one phase: t_i = start + length (i/M)⁴, graded toward its start where the
@@ -287,6 +331,8 @@ std::vector<double> run(const ConfinedRamp& c, std::span<const double> times, in
 
 double confined_ramp_stress_linear(const ConfinedRamp& c, double t) {
   check_column(c);
+  if (!c.layers.empty())
+    throw std::invalid_argument("confined_ramp_stress_linear: layered columns are not supported");
   if (!(t >= 0.0)) {
     throw std::domain_error("confined_ramp_stress_linear: time " + std::to_string(t) + " < 0");
   }
@@ -324,6 +370,7 @@ std::vector<double> confined_ramp_stress_neo_hookean(const ConfinedRamp& c,
                                                      std::span<const double> times,
                                                      const ConfinedReferenceResolution& res) {
   check_column(c);
+  check_layers(c);
   if (res.cells < 2 || res.steps < 3) {
     throw std::invalid_argument("confined ramp reference: resolution of " +
                                 std::to_string(res.cells) + " cells and " +

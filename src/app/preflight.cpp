@@ -69,6 +69,7 @@ class Preflight {
 
   std::vector<std::string> run() {
     check_names();
+    check_region_names();
     check_symmetry_planes();
     check_conflicts();
     check_formulas();
@@ -107,6 +108,22 @@ class Preflight {
   }
 
   // ---- names ----------------------------------------------------------------------------
+
+  /// Every [[region]] entry names a region of the mesh (mesh regions without an entry use
+  /// [material]).
+  void check_region_names() {
+    std::vector<std::string> shown;
+    for (const std::string& name : mesh_.region_names) shown.push_back(quoted(name));
+    for (std::size_t i = 0; i < config_.regions.size(); ++i) {
+      const std::string& name = config_.regions[i].name;
+      if (mesh_.find_region(name) >= 0) continue;
+      problem("region[" + std::to_string(i) + "].name = " + quoted(name) + ": no such region in " +
+              mesh_name() + " (" +
+              (shown.empty() ? std::string("it has no regions")
+                             : "mesh regions: " + join(shown, ", ")) +
+              ")");
+    }
+  }
 
   void check_names() {
     usable_.assign(config_.bcs.size(), false);

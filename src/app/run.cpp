@@ -225,10 +225,11 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
       config.stabilisation.type == Stabilisation::Gls) {
     // The GLS term adds c_j c_e ∫ div f div δu to the displacement block: a grad–div penalty
     // that algebraic multigrid handles poorly once it outweighs the solid's λ + 2μ.
-    double c_max = 0.0;
+    // Largest c_e / H_A over the elements, each with its own material's H_A.
+    double ratio = 0.0;
     for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
-      c_max = std::max(c_max, problem.gls_coefficient(e));
-    const double ratio = c_max / config.time.dt / problem.oedometric_modulus();
+      ratio = std::max(
+          ratio, problem.gls_coefficient(e) / config.time.dt / problem.laws_of(e).p_wave_modulus());
     summary["gls_penalty_ratio"] = ratio;
     const bool bdf = uses_ida(config.time.integrator);
     if (ratio > 5.0 || bdf) {

@@ -222,6 +222,64 @@ std::vector<NodeSet> extract_node_sets(const Mesh& mesh,
   return sets;
 }
 
+// Physical volumes of the current model as regions of `mesh`, whose tet t is gmsh element
+// tet_elements[t]. A physical volume without a name is named by its tag; groups of the same name
+// are one region. No physical volume: no regions. A tet in two regions, or (when there are
+// physical volumes) in none, is an error naming its element tag.
+void extract_regions(Mesh& mesh, const std::vector<std::size_t>& tet_elements) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 3);
+  if (groups.empty()) return;
+  std::unordered_map<std::size_t, std::size_t> tet_of;
+  tet_of.reserve(tet_elements.size());
+  for (std::size_t t = 0; t < tet_elements.size(); ++t) tet_of.emplace(tet_elements[t], t);
+  mesh.tet_region.assign(mesh.tets.size(), -1);
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (name.empty()) name = std::to_string(tag);
+    int region = mesh.find_region(name);
+    if (region < 0) {
+      region = static_cast<int>(mesh.region_names.size());
+      mesh.region_names.push_back(name);
+    }
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (const int entity : entities) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elements, nodes;
+      gmsh::model::mesh::getElements(types, elements, nodes, dim, entity);
+      for (const auto& list : elements)
+        for (const std::size_t element : list) {
+          const auto it = tet_of.find(element);
+          if (it == tet_of.end()) continue;
+          int& slot = mesh.tet_region[it->second];
+          if (slot >= 0 && slot != region) {
+            throw std::runtime_error("tetrahedron (element tag " + std::to_string(element) +
+                                     ") is in two physical volumes, '" +
+                                     mesh.region_names[static_cast<std::size_t>(slot)] + "' and '" +
+                                     name + "'");
+          }
+          slot = region;
+        }
+    }
+  }
+  for (std::size_t t = 0; t < mesh.tet_region.size(); ++t) {
+    if (mesh.tet_region[t] < 0) {
+      throw std::runtime_error("tetrahedron (element tag " + std::to_string(tet_elements[t]) +
+                               ") is in no physical volume, while others are (regions: " +
+                               [&] {
+                                 std::string names;
+                                 for (const auto& n : mesh.region_names)
+                                   names += (names.empty() ? "'" : ", '") + n + "'";
+                                 return names;
+                               }() +
+                               "); put every volume in a physical group, or none");
+    }
+  }
+  check_regions(mesh);
+}
+
 // Builds a Mesh from the current gmsh model: every 4- or 10-node tetrahedron, and one boundary
 // per physical surface (merged by name). Nodes are renumbered corners first, each group in
 // ascending gmsh tag order; nodes of no tet are dropped.
@@ -408,6 +466,7 @@ Mesh extract_current_model() {
   }
   mesh.node_sets = extract_node_sets(mesh, new_index, coordinates);
   check_node_sets(mesh);
+  extract_regions(mesh, tet_elements);
   return mesh;
 }
 

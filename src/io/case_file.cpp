@@ -41,16 +41,24 @@ class Problems {
   const std::string& source() const { return source_; }
 
   void bad_value(const std::string& key, const std::string& shown, const std::string& what) {
-    bad_.insert(key);
-    list_.push_back(source_of(key) + ": " + key + " = " + shown + ": " + what);
+    const std::string k = aliased(key);
+    bad_.insert(k);
+    list_.push_back(source_of(k) + ": " + k + " = " + shown + ": " + aliased_text(what));
   }
   void bad_key(const std::string& key, const std::string& what) {
-    bad_.insert(key);
-    list_.push_back(source_of(key) + ": " + key + ": " + what);
+    const std::string k = aliased(key);
+    bad_.insert(k);
+    list_.push_back(source_of(k) + ": " + k + ": " + aliased_text(what));
   }
   void add(std::string message) { list_.push_back(std::move(message)); }
 
-  bool is_bad(const std::string& key) const { return bad_.count(key) > 0; }
+  bool is_bad(const std::string& key) const { return bad_.count(aliased(key)) > 0; }
+  /// While set, keys and message text starting with `from` (e.g. "material.") are reported
+  /// with `to` (e.g. "region[0].") instead: the [material] checks run on a [[region]] entry.
+  void set_alias(std::string from, std::string to) {
+    alias_from_ = std::move(from);
+    alias_to_ = std::move(to);
+  }
   bool empty() const { return list_.empty(); }
   std::vector<std::string> take() { return std::move(list_); }
 
@@ -59,6 +67,20 @@ class Problems {
   std::set<std::string> overridden_;
   std::set<std::string> bad_;
   std::vector<std::string> list_;
+  std::string alias_from_, alias_to_;
+
+  std::string aliased(const std::string& key) const {
+    if (alias_from_.empty() || key.rfind(alias_from_, 0) != 0) return key;
+    return alias_to_ + key.substr(alias_from_.size());
+  }
+  std::string aliased_text(std::string text) const {
+    if (alias_from_.empty()) return text;
+    for (auto at = text.find(alias_from_); at != std::string::npos;
+         at = text.find(alias_from_, at + alias_to_.size())) {
+      text.replace(at, alias_from_.size(), alias_to_);
+    }
+    return text;
+  }
 };
 
 // ---- small helpers ------------------------------------------------------------------------
@@ -212,6 +234,21 @@ Read read_vector(const toml::node& node, const KeyInfo& key) {
   return Read{Value{out}, {}};
 }
 
+Read read_number_list(const toml::node& node, const KeyInfo& key) {
+  const auto* array = node.as_array();
+  if (array == nullptr) return fail("expected an array of numbers");
+  std::vector<double> out;
+  for (const auto& item : *array) {
+    const auto v = as_number(item);
+    if (!v) return fail("expected an array of numbers");
+    if (!std::isfinite(*v)) return fail("entries must be finite numbers");
+    if (!key.range.contains(*v))
+      return fail(with_unit("entries must be " + key.range.describe(), key));
+    out.push_back(*v);
+  }
+  return Read{Value{out}, {}};
+}
+
 Read read_string_list(const toml::node& node, const KeyInfo& key) {
   const auto* array = node.as_array();
   if (array == nullptr) return fail("expected an array of strings");
@@ -279,6 +316,8 @@ Read read_value(const toml::node& node, const KeyInfo& key) {
       return read_vector(node, key);
     case Kind::StringList:
       return read_string_list(node, key);
+    case Kind::NumberList:
+      return read_number_list(node, key);
     case Kind::Selection: {
       if (const auto* b = node.as_boolean()) return Read{Value{b->get()}, {}};
       if (node.as_array() == nullptr)
@@ -316,6 +355,7 @@ struct KnownPaths {
   std::vector<std::string> candidates;      ///< everything a top-level key may be, for suggestions
   std::vector<std::string> boundary_names;  ///< keys of a [[boundary]] entry
   std::vector<std::string> probe_names;     ///< keys of a [[probe]] entry
+  std::vector<std::string> region_names;    ///< keys of a [[region]] entry
 };
 
 const KnownPaths& known_paths() {
@@ -336,6 +376,10 @@ const KnownPaths& known_paths() {
     for (const auto& key : boundary_keys()) k.boundary_names.push_back(key.path);
     k.candidates.push_back("probe");
     for (const auto& key : probe_keys()) k.probe_names.push_back(key.path);
+    k.candidates.push_back("region");
+    k.region_names.push_back("name");
+    for (const auto& key : global_keys())
+      if (key.path.rfind("material.", 0) == 0) k.region_names.push_back(key.path.substr(9));
     return k;
   }();
   return known;
@@ -354,7 +398,8 @@ void check_unknown_keys(const toml::table& table, const std::string& prefix, Pro
   for (const auto& [k, node] : table) {
     const std::string path =
         prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-    if (known.leaves.count(path) > 0 || path == "curves" || path == "boundary" || path == "probe")
+    if (known.leaves.count(path) > 0 || path == "curves" || path == "boundary" || path == "probe" ||
+        path == "region")
       continue;
     if (known.tables.count(path) > 0) {
       if (const auto* sub = node.as_table()) {
@@ -396,7 +441,8 @@ std::string apply_override(toml::table& root, const std::string& argument, Probl
 
   // Entries of an array of tables: boundary[i].key, probe[i].key.
   for (const auto& [array_name, names] : {std::pair{std::string("boundary"), &known.boundary_names},
-                                          std::pair{std::string("probe"), &known.probe_names}}) {
+                                          std::pair{std::string("probe"), &known.probe_names},
+                                          std::pair{std::string("region"), &known.region_names}}) {
     if (key.rfind(array_name + "[", 0) != 0) continue;
     const auto close = key.find(']');
     const std::size_t first = array_name.size() + 1;
@@ -440,11 +486,12 @@ std::string apply_override(toml::table& root, const std::string& argument, Probl
     }
     parts.push_back(key.substr(start));
   } else if (known.tables.count(key) > 0 || key == "curves" || key == "boundary" ||
-             key == "probe") {
+             key == "probe" || key == "region") {
     return where + "'" + key + "' is a table; set the keys inside it instead (e.g. " +
            (key == "curves"     ? std::string("curves.ramp")
             : key == "boundary" ? std::string("boundary[0].value")
             : key == "probe"    ? std::string("probe[0].points")
+            : key == "region"   ? std::string("region[0].permeability")
                                 : *known.leaves.lower_bound(key + ".")) +
            ")";
   } else {
@@ -776,6 +823,46 @@ void check_solid_law_keys(const toml::table& root, const Config& config, Problem
                                config.material.solid_law, rules);
 }
 
+/// mesh.column.region_names and region_tops: equal lengths, tops increasing, each a layer
+/// interface (column_layer_z), the last = the height.
+void check_column_regions(const toml::table& root, const ColumnSpec& column, Problems& problems) {
+  const auto& names = column.region_names;
+  const auto& tops = column.region_tops;
+  if (names.empty() && tops.empty()) return;
+  const std::string shown = shown_at(root, "mesh.column.region_tops", format_value(tops));
+  if (names.size() != tops.size()) {
+    problems.bad_value("mesh.column.region_tops", shown,
+                       "needs one top per name of mesh.column.region_names (" +
+                           std::to_string(names.size()) + " names, " + std::to_string(tops.size()) +
+                           " tops)");
+    return;
+  }
+  std::vector<double> z;
+  try {
+    z = column_layer_z(column);
+  } catch (const std::exception&) {
+    return;  // the layer keys themselves are reported
+  }
+  const double tolerance = 1e-9 * column.height;
+  for (std::size_t r = 0; r < tops.size(); ++r) {
+    const bool interface = std::any_of(
+        z.begin() + 1, z.end(), [&](double zk) { return std::abs(zk - tops[r]) <= tolerance; });
+    std::string why;
+    if (r > 0 && !(tops[r] > tops[r - 1])) {
+      why = "must increase (entry " + std::to_string(r) + ")";
+    } else if (!interface) {
+      why = "entry " + std::to_string(r) + " = " + format_number(tops[r]) +
+            " mm is not a layer interface of the column (mesh.column.nz, grading)";
+    } else if (r + 1 == tops.size() && std::abs(tops[r] - column.height) > tolerance) {
+      why = "the last entry must be mesh.column.height = " + format_number(column.height) + " mm";
+    }
+    if (!why.empty()) {
+      problems.bad_value("mesh.column.region_tops", shown, why);
+      return;
+    }
+  }
+}
+
 /// Keys that belong to one or more mesh sources: given with another generated source they would
 /// be silently ignored, so they are an error. (The quarter cylinder's keys are tolerated with
 /// mesh.source = "file", as they always were.)
@@ -836,6 +923,10 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
     }
   }
   const ColumnSpec& column = config.mesh.column;
+  if (config.mesh.source == S::Column && !problems.is_bad("mesh.column.region_names") &&
+      !problems.is_bad("mesh.column.region_tops")) {
+    check_column_regions(root, column, problems);
+  }
   if (config.mesh.source == S::Column) {
     check_graded_layers("mesh.column.nz", column.nz, "mesh.column.grading_faces",
                         column.grading_faces, "mesh.column.grading_ratio", column.grading_ratio);
@@ -873,6 +964,96 @@ void check_reaction_boundaries(const toml::table& root, const Config& config, Pr
   }
 }
 
+/// λ + ⅔μ > 0 for the Neo-Hookean solid.
+void check_neo_hookean_bulk(const toml::table& root, const MaterialConfig& material,
+                            Problems& problems) {
+  const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
+  if (material.solid_law == SolidLawType::NeoHookean && !problems.is_bad("material.lambda") &&
+      !problems.is_bad("material.mu") && !(bulk_like > 0.0)) {
+    problems.bad_value(
+        "material.lambda", shown_at(root, "material.lambda", format_number(material.lambda)),
+        "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");
+  }
+}
+
+/// Reads [[region]] entries: a name, distinct and not empty, and the keys of [material], each
+/// omitted key inherited from [material]. The [material] checks run on the entry with its keys
+/// named region[i].key: the entry is read as a [material] table (its choice keys, when it does
+/// not give them, taken from [material]) under the alias "material." → "region[i].".
+void read_regions(const toml::table& root, Config& config, Problems& problems) {
+  const toml::node* node = root.get("region");
+  if (node == nullptr) return;
+  const auto* array = node->as_array();
+  if (array == nullptr || !array->is_array_of_tables()) {
+    problems.bad_value("region", show(*node), "expected [[region]] tables");
+    return;
+  }
+  const auto& known = known_paths();
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string entry = "region[" + std::to_string(i) + "]";
+    const auto& table = *(*array)[i].as_table();
+    for (const auto& [k, value] : table) {
+      const std::string name(k.str());
+      if (std::find(known.region_names.begin(), known.region_names.end(), name) ==
+          known.region_names.end()) {
+        const std::string full = entry + "." + name;
+        problems.add(
+            problems.source_of(full) + ": " +
+            unknown_key_message(full, suggest(full, prefixed(entry + ".", known.region_names))));
+      }
+    }
+    RegionConfig region;
+    bool named = false;
+    const toml::node* name_node = table.get("name");
+    if (name_node == nullptr) {
+      problems.bad_key(entry + ".name", "required key is missing");
+    } else if (name_node->as_string() == nullptr || name_node->as_string()->get().empty()) {
+      problems.bad_value(entry + ".name", show(*name_node),
+                         "expected the name of a mesh region (a non-empty string)");
+    } else {
+      region.name = name_node->as_string()->get();
+      named = names.insert(region.name).second;
+      if (!named) {
+        problems.bad_value(entry + ".name", quote(region.name), "another [[region]] has this name");
+      }
+    }
+
+    toml::table material = table;
+    material.erase("name");
+    for (const char* choice : {"solid_law", "permeability_law"}) {
+      const std::string path = std::string("material.") + choice;
+      const toml::node* inherited = find_path(root, path);
+      if (material.get(choice) == nullptr && inherited != nullptr && !problems.is_bad(path) &&
+          inherited->as_string() != nullptr) {
+        material.insert_or_assign(choice, inherited->as_string()->get());
+      }
+    }
+    toml::table shaped;
+    shaped.insert_or_assign("material", std::move(material));
+    Config one;
+    one.material = config.material;
+    problems.set_alias("material.", entry + ".");
+    for (const auto& key : global_keys()) {
+      if (key.path.rfind("material.", 0) != 0) continue;
+      const toml::node* value = find_path(shaped, key.path);
+      if (value == nullptr) continue;
+      const Read read = read_value(*value, key);
+      if (!read.value) {
+        problems.bad_value(key.path, show(*value), read.problem);
+      } else if (key.store) {
+        key.store(one, *read.value);
+      }
+    }
+    check_permeability_law_keys(shaped, one, problems);
+    check_solid_law_keys(shaped, one, problems);
+    check_neo_hookean_bulk(shaped, one.material, problems);
+    problems.set_alias("", "");
+    region.material = one.material;
+    if (named) config.regions.push_back(region);
+  }
+}
+
 void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
                         Problems& problems) {
   check_mesh_source_keys(root, config, problems);
@@ -905,14 +1086,7 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
                            " (BDF's dJ/dt is the exact rate of its own solution)");
   }
 
-  const auto& material = config.material;
-  const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
-  if (material.solid_law == SolidLawType::NeoHookean && !problems.is_bad("material.lambda") &&
-      !problems.is_bad("material.mu") && !(bulk_like > 0.0)) {
-    problems.bad_value(
-        "material.lambda", shown_at(root, "material.lambda", format_number(material.lambda)),
-        "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");
-  }
+  check_neo_hookean_bulk(root, config.material, problems);
 
   if (!problems.is_bad("output.line_points") && config.output.line_points == 1) {
     problems.bad_value("output.line_points", "1",
@@ -999,6 +1173,7 @@ Config parse_case(const std::string& toml_text, const std::string& source_name,
   read_boundaries(root, curve_names, config, problems);
   read_probes(root, config, problems);
   check_cross_fields(root, base_dir, config, problems);
+  read_regions(root, config, problems);
 
   if (!problems.empty()) throw CaseError(problems.take());
   return config;

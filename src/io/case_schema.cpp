@@ -226,6 +226,16 @@ Key<Target> string_list_key(std::string path, std::vector<std::string> choices, 
   return key;
 }
 
+template <class Target, class Access>
+Key<Target> number_list_key(std::string path, Range range, std::string unit, std::string help,
+                            Access access) {
+  auto key = make_key<Target>(std::move(path), Kind::NumberList, std::move(unit), std::move(help));
+  key.range = range;
+  key.store = [access](Target& t, const Value& v) { access(t) = std::get<std::vector<double>>(v); };
+  key.fetch = [access](const Target& t) -> Value { return std::vector<double>{access(t)}; };
+  return key;
+}
+
 /// A Selection key: `true` stores `defaults`, `false` nothing, an array the named values (in
 /// the order of `names`, whatever the order given). Reported back the same way: `true` for
 /// the defaults, `false` for none, else the names.
@@ -385,6 +395,16 @@ std::vector<Key<Config>> build_global_keys() {
       "mesh.column.grading_ratio", from_to(1, 1e6), "",
       "Thickest over thinnest layer (1 = uniform).",
       [](auto& c) -> auto& { return c.mesh.column.grading_ratio; }));
+  keys.push_back(string_list_key<C>(
+      "mesh.column.region_names", {},
+      "Material regions stacked from the bottom, one name each (a [[region]] entry gives each "
+      "its material); empty = no regions. With mesh.column.region_tops.",
+      [](auto& c) -> auto& { return c.mesh.column.region_names; }));
+  keys.push_back(number_list_key<C>(
+      "mesh.column.region_tops", above(0), "mm",
+      "Top z of each region of mesh.column.region_names, increasing, each a layer interface, "
+      "the last = mesh.column.height.",
+      [](auto& c) -> auto& { return c.mesh.column.region_tops; }));
 
   keys.push_back(number_key<C>(
       "mesh.sphere_octant.radius", above(0), "mm",
@@ -810,6 +830,8 @@ std::string kind_name(Kind kind) {
       return "array of [t, value]";
     case Kind::Expression:
       return "formula";
+    case Kind::NumberList:
+      return "array of numbers";
   }
   return "";
 }
@@ -848,6 +870,8 @@ std::string allowed_text(const KeyInfo& key) {
       return ">= 1 point, t strictly increasing";
     case Kind::Expression:
       return "see *Formulas*";
+    case Kind::NumberList:
+      return key.range.describe().empty() ? "" : "each " + key.range.describe();
   }
   return "";
 }
@@ -918,6 +942,30 @@ std::string boundary_section_markdown() {
       }
     }
     out += table_row(key, "boundary[i]." + key.path, default_text);
+  }
+  return out + "\n";
+}
+
+std::string region_section_markdown() {
+  std::string out = "### `[[region]]`\n\n";
+  out +=
+      "Materials of mesh regions, one `[[region]]` table each (none by default): `name` names a "
+      "region of the mesh (a physical volume of a .msh file, or a region of the generated "
+      "column), the other keys are those of `[material]`, and each key an entry leaves out is "
+      "inherited from `[material]`. A mesh region without an entry uses `[material]`; a name "
+      "that is not a region of the mesh is an error naming the mesh's regions. The checks of "
+      "`[material]` apply to each entry (ranges, keys of a law the entry does not use, "
+      "lambda + 2/3 mu > 0), with messages naming `region[i].key`. With `--set`, entry i "
+      "(counted from 0) is `region[i]`, e.g. `--set region[0].permeability=2e-3` "
+      "(docs/model_layer.md, *Regions*).\n\n";
+  out += kTableHeader;
+  out +=
+      "| `region[i].name` | string | required | not empty, distinct | | Name of the mesh "
+      "region. |\n";
+  for (const auto& key : global_keys()) {
+    if (key.path.rfind("material.", 0) != 0) continue;
+    const std::string name = key.path.substr(9);
+    out += table_row(key, "region[i]." + name, "inherited from `" + key.path + "`");
   }
   return out + "\n";
 }
@@ -1062,6 +1110,11 @@ std::string format_value(const Value& value) {
       for (const auto& s : v) items.push_back(quote(s));
       return "[" + join(items, ", ") + "]";
     }
+    std::string operator()(const std::vector<double>& v) const {
+      std::vector<std::string> items;
+      for (const double x : v) items.push_back(format_number(x));
+      return "[" + join(items, ", ") + "]";
+    }
   };
   return std::visit(Visitor{}, value);
 }
@@ -1100,6 +1153,8 @@ std::string case_schema_markdown() {
     if (section != current) {
       if (current == "curves")
         out += "\n" + boundary_section_markdown();
+      else if (current == "material")
+        out += "\n" + region_section_markdown();
       else if (current != "\x01")
         out += "\n";
       current = section;
@@ -1150,6 +1205,22 @@ nlohmann::json config_to_json(const Config& config) {
     bcs.push_back(entry);
   }
   out["boundary"] = bcs;
+
+  if (!config.regions.empty()) {
+    // Each entry in full: the inherited keys with the values in use.
+    nlohmann::json regions = nlohmann::json::array();
+    for (const RegionConfig& region : config.regions) {
+      Config one;
+      one.material = region.material;
+      nlohmann::json entry = nlohmann::json::object();
+      entry["name"] = region.name;
+      for (const auto& key : global_keys())
+        if (key.fetch && key.path.rfind("material.", 0) == 0)
+          entry[key.path.substr(9)] = value_to_json(key.fetch(one));
+      regions.push_back(entry);
+    }
+    out["region"] = regions;
+  }
 
   nlohmann::json probes = nlohmann::json::array();
   for (const auto& probe : config.output.probes) {

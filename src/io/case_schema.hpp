@@ -28,6 +28,7 @@ enum class Kind {
   Selection,   ///< true (a default set), false (none) or an array of strings from `choices`
   Curve,       ///< array of [t, value] pairs (only under [curves])
   Expression,  ///< formula of x, y, z, t (string; a number is taken as a constant formula)
+  NumberList,  ///< array of numbers, each in `range`
 };
 
 /// Whether a [[boundary]] key must, may or must not appear for a given boundary type.
@@ -49,7 +50,7 @@ struct Range {
 
 /// A key's value once read from TOML (Choice keys hold their string).
 using Value = std::variant<std::int64_t, double, bool, std::string, std::array<double, 3>,
-                           std::vector<std::string>>;
+                           std::vector<std::string>, std::vector<double>>;
 
 /// Everything about a key except how it is stored.
 struct KeyInfo {

@@ -109,6 +109,49 @@ std::vector<double> layer_coordinates(const ColumnSpec& spec) {
   return z;
 }
 
+/// Regions of the column's tets from spec.region_names and region_tops (tets are stored layer by
+/// layer, 6·nx·ny per layer); throws naming the region whose top is not a layer interface.
+void assign_column_regions(const ColumnSpec& spec, const std::vector<double>& z, Mesh& mesh) {
+  if (spec.region_names.empty() && spec.region_tops.empty()) return;
+  if (spec.region_names.size() != spec.region_tops.size())
+    throw std::runtime_error(std::to_string(spec.region_names.size()) + " region names but " +
+                             std::to_string(spec.region_tops.size()) + " region tops");
+  const double tolerance = 1e-9 * spec.height;
+  std::vector<int> layer_region(z.size() - 1, -1);
+  std::size_t next_layer = 0;
+  double below = 0.0;
+  for (std::size_t r = 0; r < spec.region_names.size(); ++r) {
+    const std::string& name = spec.region_names[r];
+    const double top = spec.region_tops[r];
+    const std::string label = "region " + std::to_string(r) + " ('" + name + "')";
+    if (name.empty()) throw std::runtime_error(label + ": empty name");
+    for (std::size_t q = 0; q < r; ++q)
+      if (spec.region_names[q] == name)
+        throw std::runtime_error(label + ": the name is used twice");
+    if (!(top > below + tolerance))
+      throw std::runtime_error(label + ": top z = " + std::to_string(top) +
+                               " mm must be above the region below it (" + std::to_string(below) +
+                               " mm)");
+    std::size_t k = next_layer;
+    while (k + 1 < z.size() && z[k + 1] < top - tolerance) ++k;
+    if (k + 1 >= z.size() || std::abs(z[k + 1] - top) > tolerance)
+      throw std::runtime_error(label + ": top z = " + std::to_string(top) +
+                               " mm is not a layer interface of the column");
+    for (std::size_t l = next_layer; l <= k; ++l) layer_region[l] = static_cast<int>(r);
+    next_layer = k + 1;
+    below = top;
+    mesh.region_names.push_back(name);
+  }
+  if (next_layer != layer_region.size())
+    throw std::runtime_error("the last region's top z = " + std::to_string(below) +
+                             " mm must be the column's height, " + std::to_string(spec.height) +
+                             " mm");
+  const std::size_t per_layer = 6 * static_cast<std::size_t>(spec.nx) * spec.ny;
+  mesh.tet_region.resize(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    mesh.tet_region[t] = layer_region[t / per_layer];
+}
+
 }  // namespace
 
 std::vector<double> column_layer_z(const ColumnSpec& spec) {
@@ -179,7 +222,9 @@ Mesh generate_column(const ColumnSpec& spec) {
         add_square(at, {i, ny, k}, ex, ez, boundaries[5].second);
       }
     }
-    return make_p2_from_linear(std::move(vertices), tets, boundaries);
+    Mesh mesh = make_p2_from_linear(std::move(vertices), tets, boundaries);
+    assign_column_regions(spec, z, mesh);
+    return mesh;
   });
 }
 

@@ -13,7 +13,7 @@ namespace biphasic::detail {
 /// What the module provides (its symbol "biphasic_gmsh_backend" returns a pointer to one).
 struct GmshBackend {
   /// Layout and meaning of this table; bumped whenever either changes.
-  static constexpr int kAbi = 3;
+  static constexpr int kAbi = 4;  // 4: Mesh gained tet_region and region_names
   int abi;
   Mesh (*quarter_cylinder)(const QuarterCylinderSpec&);  ///< spec already validated
   Mesh (*sphere_octant)(const SphereOctantSpec&);        ///< spec already validated

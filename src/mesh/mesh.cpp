@@ -145,6 +145,12 @@ void orient_boundary_faces(Mesh& mesh) {
   }
 }
 
+int Mesh::find_region(const std::string& name) const {
+  for (std::size_t r = 0; r < region_names.size(); ++r)
+    if (region_names[r] == name) return static_cast<int>(r);
+  return -1;
+}
+
 void check_mesh(const Mesh& mesh) {
   const Index nn = mesh.num_nodes();
   const Index nv = mesh.num_vertices;
@@ -222,6 +228,28 @@ void check_mesh(const Mesh& mesh) {
     }
   }
   check_node_sets(mesh);
+  check_regions(mesh);
+}
+
+void check_regions(const Mesh& mesh) {
+  if (mesh.tet_region.empty()) {
+    if (!mesh.region_names.empty() && mesh.region_names.size() != 1)
+      fail(std::to_string(mesh.region_names.size()) +
+           " region names but no region per tetrahedron");
+    return;
+  }
+  if (mesh.tet_region.size() != mesh.tets.size())
+    fail(std::to_string(mesh.tet_region.size()) + " region entries for " +
+         std::to_string(mesh.tets.size()) + " tetrahedra");
+  const auto count = static_cast<int>(mesh.region_names.size());
+  for (std::size_t t = 0; t < mesh.tet_region.size(); ++t)
+    if (mesh.tet_region[t] < 0 || mesh.tet_region[t] >= count)
+      fail("tetrahedron " + std::to_string(t) + ": region " + std::to_string(mesh.tet_region[t]) +
+           " is not below the number of regions, " + std::to_string(count));
+  for (int a = 0; a < count; ++a)
+    for (int b = 0; b < a; ++b)
+      if (mesh.region_names[a] == mesh.region_names[b])
+        fail("two regions are named '" + mesh.region_names[a] + "'");
 }
 
 void check_node_sets(const Mesh& mesh) {

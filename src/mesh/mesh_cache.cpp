@@ -2,7 +2,10 @@
 //   "biphasic-mesh\n" (14 bytes), format version (u32), byte-order mark 0x01020304 (u32),
 //   description (count + bytes), nodes (count, then x y z doubles), num_vertices,
 //   tetrahedra (count, then 10 indices each), boundaries (count, then per boundary: name
-//   (count + bytes), faces (count, then 6 indices each)), FNV-1a 64 checksum of all before it.
+//   (count + bytes), faces (count, then 6 indices each)), regions (count of names, then each
+//   name (count + bytes); count of per-tet entries, then one i32 each), FNV-1a 64 checksum of
+//   all before it. Version 2 added the regions; an entry of another version is a miss and is
+//   regenerated and overwritten.
 #include "biphasic/mesh/mesh_cache.hpp"
 
 #include <unistd.h>
@@ -30,7 +33,7 @@ namespace {
 
 constexpr char kMagic[] = "biphasic-mesh\n";
 constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 constexpr std::uint32_t kByteOrderMark = 0x01020304u;
 /// Largest cache file read back [bytes]; anything larger is treated as a miss (and not stored).
 constexpr std::uintmax_t kMaxCacheFileBytes = std::uintmax_t{2} << 30;
@@ -129,6 +132,10 @@ std::vector<char> serialise(const std::string& description, const Mesh& mesh) {
     w.put<std::uint64_t>(b.faces.size());
     w.put_bytes(b.faces.data(), b.faces.size() * sizeof(Tri6));
   }
+  w.put<std::uint64_t>(mesh.region_names.size());
+  for (const std::string& name : mesh.region_names) w.put_string(name);
+  w.put<std::uint64_t>(mesh.tet_region.size());
+  w.put_bytes(mesh.tet_region.data(), mesh.tet_region.size() * sizeof(int));
   std::vector<char>& bytes = w.bytes();
   const std::uint64_t checksum = fnv1a(bytes.data(), bytes.size());
   w.put(checksum);
@@ -163,6 +170,13 @@ std::optional<Mesh> deserialise(const std::vector<char>& bytes, const std::strin
     b.faces.resize(n);
     if (!r.get_bytes(b.faces.data(), n * sizeof(Tri6))) return std::nullopt;
   }
+  if (!r.get_count(n, sizeof(std::uint64_t))) return std::nullopt;
+  mesh.region_names.resize(n);
+  for (std::string& name : mesh.region_names)
+    if (!r.get_string(name)) return std::nullopt;
+  if (!r.get_count(n, sizeof(int))) return std::nullopt;
+  mesh.tet_region.resize(n);
+  if (!r.get_bytes(mesh.tet_region.data(), n * sizeof(int))) return std::nullopt;
   if (r.position() != body - kMagicSize) return std::nullopt;
   return mesh;
 }

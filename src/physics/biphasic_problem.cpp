@@ -140,7 +140,7 @@ std::pair<double, double> data_scales(const Mesh& mesh, const Config& config, do
 BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     : mesh_(mesh),
       curves_(config.curves),
-      laws_(make_material_laws(config.material)),
+      laws_{make_material_laws(config.material)},
       pattern_(mesh),
       colours_(colour_elements(mesh)) {
   // Reference geometry per element and quadrature point; GLS coefficients.
@@ -151,8 +151,40 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   const bool flux = config.stabilisation.type == Stabilisation::FluxPerturbation;
   if (gls) gls_c_.resize(mesh.tets.size());
   if (flux) flux_beta_.resize(mesh.tets.size());
-  const double HA = laws_.p_wave_modulus();
-  const double k_ref = laws_.reference_permeability();
+  // Material regions: each mesh region with a [[region]] entry gets its own laws; the others
+  // use [material] (laws_[0]).
+  std::vector<int> region_law(mesh.region_names.size(), 0);
+  for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
+    for (const RegionConfig& entry : config.regions)
+      if (entry.name == mesh.region_names[r]) {
+        region_law[r] = static_cast<int>(laws_.size());
+        laws_.push_back(make_material_laws(entry.material));
+      }
+  for (const RegionConfig& entry : config.regions)
+    if (mesh.find_region(entry.name) < 0)
+      throw std::runtime_error("region '" + entry.name + "': the mesh has no region of that name");
+  if (laws_.size() > 1) {
+    element_law_.resize(mesh.tets.size());
+    for (std::size_t e = 0; e < mesh.tets.size(); ++e)
+      element_law_[e] = region_law[static_cast<std::size_t>(mesh.region_of(static_cast<Index>(e)))];
+  }
+  // Scales of the whole problem (Dirichlet rows, solution scales, stiffness and conductance
+  // scales): the largest H_A and the largest k(1) over the law sets some element uses. A row
+  // scale or tolerance scale only needs the magnitude of the largest diagonal entries, which the
+  // stiffest and most permeable material sets; with one material these are its H_A and k(1).
+  std::vector<char> used(laws_.size(), 0);
+  if (element_law_.empty()) {
+    used[0] = 1;
+  } else {
+    for (const int l : element_law_) used[static_cast<std::size_t>(l)] = 1;
+  }
+  double HA = 0.0, k_ref = 0.0;
+  for (std::size_t l = 0; l < laws_.size(); ++l)
+    if (used[l]) {
+      HA = std::max(HA, laws_[l].p_wave_modulus());
+      k_ref = std::max(k_ref, laws_[l].reference_permeability());
+    }
+  modulus_ = HA;
   double mean_length = 0.0;
   for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
     Eigen::Matrix<double, 10, 3> X;
@@ -167,8 +199,10 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     if (gls || flux) {
       const double h = element_length(x, config.stabilisation.length);
       const double h2 = config.stabilisation.scale * h * h;
-      if (gls) gls_c_[e] = h2 / (4.0 * k_ref);
-      if (flux) flux_beta_[e] = h2 / (4.0 * HA);
+      // Each element's own material: c_e from its k(1), β from its H_A.
+      const MaterialLaws& laws = laws_of(static_cast<Index>(e));
+      if (gls) gls_c_[e] = h2 / (4.0 * laws.reference_permeability());
+      if (flux) flux_beta_[e] = h2 / (4.0 * laws.p_wave_modulus());
     }
   }
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
@@ -282,7 +316,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       }
     }
   }
-  solution_scales_ = data_scales(mesh, config, laws_.p_wave_modulus());
+  solution_scales_ = data_scales(mesh, config, modulus_);
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -429,12 +463,13 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
   ElementVector ye, ydote;
   gather(e, y, ydot, ye, ydote);
   const ElementCoefficients c{gls_coefficient(e), flux_perturbation(e), volume_rate_dt_};
+  const MaterialLaws& laws = laws_of(e);
   try {
     std::visit(
         [&](const auto& solid, const auto& permeability) {
           biphasic_element(geometry_[e], solid, permeability, c, ye, ydote, with_jacobian, out);
         },
-        laws_.solid, laws_.permeability);
+        laws.solid, laws.permeability);
   } catch (const std::domain_error& err) {
     throw InvertedElement("element " + std::to_string(e) + ": " + err.what());
   }
@@ -639,17 +674,23 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
 }
 
 double BiphasicProblem::gls_time_scale() const {
-  double c = 0.0;
-  for (double ce : gls_c_)
-    if (ce > 0.0 && (c == 0.0 || ce < c)) c = ce;
-  return c / oedometric_modulus();
+  // min_e c_e / H_A(e), each element with its own material's H_A.
+  double time = 0.0;
+  for (std::size_t e = 0; e < gls_c_.size(); ++e) {
+    const double ce = gls_c_[e];
+    if (!(ce > 0.0)) continue;
+    const double te = ce / laws_of(static_cast<Index>(e)).p_wave_modulus();
+    if (time == 0.0 || te < time) time = te;
+  }
+  return time;
 }
 
 void BiphasicProblem::pressure_schur_term(double cj, double cj_gls,
                                           std::vector<PressureEntry>& out) const {
-  const double modulus = oedometric_modulus();
   out.reserve(out.size() + 16 * mesh_.tets.size());
   for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+    // Each element's own H_A: the div–div stiffness its pressure modes see.
+    const double modulus = laws_of(static_cast<Index>(e)).p_wave_modulus();
     double volume = 0.0;
     for (const PointGeometry& g : geometry_[e]) volume += g.weight;
     const double w = cj / (modulus + cj_gls * gls_coefficient(static_cast<Index>(e)));

@@ -61,7 +61,6 @@ void put_symmetric(const Mat3& s, double* out) {
 CellFields recover_cell_fields(const BiphasicProblem& problem, const double* y) {
   const Mesh& mesh = problem.mesh();
   const SparsityPattern& pattern = problem.pattern();
-  const MaterialLaws& laws = problem.laws();
   const auto count = static_cast<std::ptrdiff_t>(mesh.tets.size());
   const auto n = static_cast<std::size_t>(count);
   CellFields out;
@@ -84,6 +83,7 @@ CellFields recover_cell_fields(const BiphasicProblem& problem, const double* y) 
       Eigen::Vector4d p;
       for (int c = 0; c < 4; ++c) p(c) = y[pattern.p_dof(tet[c])];
       ElementMeans m;
+      const MaterialLaws& laws = problem.laws_of(static_cast<Index>(e));
       try {
         m = std::visit(
             [&](const auto& solid, const auto& permeability) {

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -204,6 +205,70 @@ TEST(ConfinedRampHolmesMow, AgreesWithLinearTheoryAtSmallStrain) {
     EXPECT_LT(std::abs(sigma[i] / confined_ramp_stress_linear(c, kTimes[i]) - 1.0), 2e-5)
         << "t = " << kTimes[i];
   }
+}
+
+// ---- layered permeability ----------------------------------------------------------------
+
+/// FEBio's column (μ = 0.5, λ = 0, h = 1, 10 % over 100 s) with two layers of k₀ given.
+ConfinedRamp two_layers(double lower_fraction, double k_lower, double k_upper) {
+  ConfinedRamp c;
+  c.permeability = k_lower;
+  c.layers = {{lower_fraction, k_lower}, {1.0 - lower_fraction, k_upper}};
+  return c;
+}
+
+TEST(ConfinedRampLayers, EqualLayersReproduceTheSingleLayer) {
+  // Two layers of the same k: only the grid differs (one node moved onto the interface), so the
+  // answer agrees to the reference's accuracy; an interface on a grid node changes nothing.
+  const ConfinedRamp single;
+  const std::vector<double> a = confined_ramp_stress_neo_hookean(single, kTimes);
+  const std::vector<double> b =
+      confined_ramp_stress_neo_hookean(two_layers(0.5, 1e-3, 1e-3), kTimes);
+  for (std::size_t i = 0; i < kTimes.size(); ++i)
+    EXPECT_NEAR(b[i], a[i], 2e-6 * std::abs(a[i])) << "t = " << kTimes[i];
+  ConfinedRamp one_layer = single;
+  one_layer.layers = {{1.0, 1e-3}};
+  const std::vector<double> c = confined_ramp_stress_neo_hookean(one_layer, kTimes);
+  for (std::size_t i = 0; i < kTimes.size(); ++i) EXPECT_EQ(c[i], a[i]) << "t = " << kTimes[i];
+}
+
+TEST(ConfinedRampLayers, EquilibriumStressIsIndependentOfThePermeability) {
+  const double times[] = {100.0, 40000.0};
+  const double equilibrium = neo_hookean_uniaxial_stress(0.5, 0.0, 0.9);
+  for (const ConfinedRamp& c : {two_layers(0.5, 1e-3, 2.5e-4), two_layers(0.3, 2.5e-4, 1e-3)}) {
+    const std::vector<double> sigma = confined_ramp_stress_neo_hookean(c, times);
+    EXPECT_NEAR(sigma[1], equilibrium, 1e-7);
+    EXPECT_LT(sigma[0], equilibrium);  // not yet relaxed at the end of the ramp
+  }
+}
+
+TEST(ConfinedRampLayers, LieBetweenTheUniformColumnsAndAreResolutionIndependent) {
+  // A less permeable upper half: drains slower than the column of k₁ everywhere and faster than
+  // that of k₂ = k₁/4 everywhere, so |σ| at the end of the ramp lies between theirs.
+  const ConfinedRamp layered = two_layers(0.5, 1e-3, 2.5e-4);
+  const std::vector<double> a = confined_ramp_stress_neo_hookean(layered, kTimes);
+  ConfinedRamp fast, slow;
+  slow.permeability = 2.5e-4;
+  const double t0[] = {100.0};
+  const double sigma_fast = confined_ramp_stress_neo_hookean(fast, t0)[0];
+  const double sigma_slow = confined_ramp_stress_neo_hookean(slow, t0)[0];
+  EXPECT_LT(a[4], sigma_fast);
+  EXPECT_GT(a[4], sigma_slow);
+  const std::vector<double> fine = confined_ramp_stress_neo_hookean(layered, kTimes, {400, 400});
+  for (std::size_t i = 0; i < kTimes.size(); ++i)
+    EXPECT_NEAR(a[i], fine[i], 1e-5 * std::abs(fine[i])) << "t = " << kTimes[i];
+  std::cout << "[ layered column ] sigma(100 s) = " << a[4] << " MPa (k1 column " << sigma_fast
+            << ", k1/4 column " << sigma_slow << ")\n";
+}
+
+TEST(ConfinedRampLayers, RefusesBadLayers) {
+  ConfinedRamp c = two_layers(0.5, 1e-3, 2.5e-4);
+  c.layers[1].fraction = 0.4;
+  EXPECT_THROW(confined_ramp_stress_neo_hookean(c, kTimes), std::domain_error);
+  c.layers[1] = {0.5, 0.0};
+  EXPECT_THROW(confined_ramp_stress_neo_hookean(c, kTimes), std::domain_error);
+  EXPECT_THROW(confined_ramp_stress_linear(two_layers(0.5, 1e-3, 2.5e-4), 10.0),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -650,7 +650,7 @@ line_end = [0, 0, 4]
   EXPECT_EQ(j["time"]["newton"].size(), 8u);
   EXPECT_EQ(j["time"]["newton"]["max_cutbacks"], 4);
   EXPECT_EQ(j["mesh"].size(), 15u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
-  EXPECT_EQ(j["mesh"]["column"].size(), 8u);
+  EXPECT_EQ(j["mesh"]["column"].size(), 10u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
   EXPECT_EQ(j["body_force"]["y"], "0");
@@ -937,4 +937,107 @@ TEST(CaseFile, HolmesMowParameterRanges) {
 }
 
 }  // namespace
+// [[region]]: each omitted key inherited from [material]; the [material] checks on each entry,
+// named region[i].key.
+TEST(CaseFile, RegionsInheritFromMaterial) {
+  const Config c = parse_case(kMinimalCase + R"(
+[material]
+lambda = 0.3
+mu = 0.6
+permeability = 2e-3
+
+[[region]]
+name = "bone"
+mu = 5.0
+
+[[region]]
+name = "cartilage"
+solid_law = "holmes_mow"
+youngs_modulus = 0.7
+permeability_law = "exponential"
+permeability_M = 3.0
+)",
+                              "cases/x.toml", {}, ".");
+  ASSERT_EQ(c.regions.size(), 2u);
+  EXPECT_EQ(c.regions[0].name, "bone");
+  EXPECT_EQ(c.regions[0].material.mu, 5.0);
+  EXPECT_EQ(c.regions[0].material.lambda, 0.3);
+  EXPECT_EQ(c.regions[0].material.permeability, 2e-3);
+  EXPECT_EQ(c.regions[1].material.solid_law, SolidLawType::HolmesMow);
+  EXPECT_EQ(c.regions[1].material.youngs_modulus, 0.7);
+  EXPECT_EQ(c.regions[1].material.permeability_law, PermeabilityLawType::Exponential);
+  EXPECT_EQ(c.regions[1].material.permeability_M, 3.0);
+  EXPECT_EQ(c.regions[1].material.permeability, 2e-3);
+  EXPECT_EQ(c.material.mu, 0.6);  // [material] itself unchanged
+  EXPECT_EQ(c.material.solid_law, SolidLawType::NeoHookean);
+  // --set reaches an entry's keys.
+  const Config set = parse_case(kMinimalCase + "[[region]]\nname = \"bone\"\n", "cases/x.toml",
+                                {"region[0].permeability=5e-4"}, ".");
+  EXPECT_EQ(set.regions.at(0).material.permeability, 5e-4);
+  // The choice of [material] is inherited: a region under a Holmes-Mow [material] may give E.
+  const Config hm = parse_case(kMinimalCase + R"(
+[material]
+solid_law = "holmes_mow"
+
+[[region]]
+name = "a"
+youngs_modulus = 2.0
+)",
+                               "cases/x.toml", {}, ".");
+  EXPECT_EQ(hm.regions.at(0).material.solid_law, SolidLawType::HolmesMow);
+  EXPECT_EQ(hm.regions.at(0).material.youngs_modulus, 2.0);
+}
+
+TEST(CaseFile, RegionKeysAreCheckedLikeMaterial) {
+  const auto p = problems_of(kMinimalCase + R"(
+[[region]]
+name = "a"
+lambda = 0.2
+solid_law = "holmes_mow"
+permeability = -1
+
+[[region]]
+mu = 0.5
+
+[[region]]
+name = "a"
+permeability_kappa = 2.0
+viscosity = 1.0
+
+[[region]]
+name = "c"
+lambda = -1.0
+)");
+  EXPECT_TRUE(has_problem(p, {"cases/x.toml: region[0].lambda = 0.2",
+                              "applies only to region[0].solid_law = \"neo_hookean\"",
+                              "not to region[0].solid_law = \"holmes_mow\""}));
+  EXPECT_TRUE(has_problem(p, {"region[0].permeability = -1", "must be > 0"}));
+  EXPECT_TRUE(has_problem(p, {"region[1].name", "required key is missing"}));
+  EXPECT_TRUE(has_problem(p, {"region[2].name = \"a\"", "another [[region]] has this name"}));
+  EXPECT_TRUE(has_problem(p, {"region[2].permeability_kappa = 2.0", "holmes_mow"}));
+  EXPECT_TRUE(has_problem(p, {"region[2].viscosity"}));
+  EXPECT_TRUE(has_problem(p, {"region[3].lambda = -1.0", "region[3].lambda + 2/3 region[3].mu"}));
+  for (const auto& problem : p) EXPECT_EQ(problem.find("material."), std::string::npos) << problem;
+}
+
+TEST(CaseFile, ColumnRegionKeys) {
+  const std::string column = R"(
+[mesh]
+source = "column"
+[mesh.column]
+nz = 4
+region_names = ["lower", "upper"]
+)";
+  const Config c =
+      parse_case(kMinimalCase + column + "region_tops = [0.5, 1.0]\n", "cases/x.toml", {}, ".");
+  EXPECT_EQ(c.mesh.column.region_names, (std::vector<std::string>{"lower", "upper"}));
+  EXPECT_EQ(c.mesh.column.region_tops, (std::vector<double>{0.5, 1.0}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + column + "region_tops = [0.4, 1.0]\n"),
+                          {"mesh.column.region_tops = [0.4, 1.0]", "not a layer interface"}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + column + "region_tops = [0.5, 0.75]\n"),
+                          {"mesh.column.region_tops", "mesh.column.height"}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + column + "region_tops = [1.0]\n"),
+                          {"mesh.column.region_tops", "2 names, 1 tops"}));
+}
+
 }  // namespace biphasic

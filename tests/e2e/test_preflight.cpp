@@ -213,6 +213,16 @@ TEST(Preflight, CheckValidatesNamesFormulasAndMeshFiles) {
   expect_refused("garbage.toml", text, {"mesh.file = \"" + garbage.string() + "\""});
 }
 
+// A [[region]] entry naming no region of the mesh: `check` and `run` refuse it before any work,
+// naming the case file, the key and the mesh's regions (its physical volumes).
+TEST(Preflight, UnknownRegionIsRefusedNamingTheMeshRegions) {
+  const std::string text = cylinder_case(std::string(kHeldByPointAndCurve) +
+                                         "[[region]]\nname = \"cartilage\"\npermeability = 2e-3\n");
+  expect_refused("region.toml", text,
+                 {"region.toml: region[0].name = \"cartilage\"", "no such region",
+                  "mesh regions: \"domain\""});
+}
+
 // A binary .msh file whose one volume holds both 4-node and 10-node tetrahedra (gmsh corrupted
 // its heap reading one) is bad input: `check` and `run` exit 1 before any work, naming the file
 // and the mixed orders.

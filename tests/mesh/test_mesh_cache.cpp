@@ -23,7 +23,8 @@ using biphasic::Mesh;
 
 bool same_mesh(const Mesh& a, const Mesh& b) {
   if (a.nodes != b.nodes || a.num_vertices != b.num_vertices || a.tets != b.tets ||
-      a.boundaries.size() != b.boundaries.size())
+      a.boundaries.size() != b.boundaries.size() || a.tet_region != b.tet_region ||
+      a.region_names != b.region_names)
     return false;
   for (std::size_t i = 0; i < a.boundaries.size(); ++i)
     if (a.boundaries[i].name != b.boundaries[i].name ||
@@ -104,6 +105,31 @@ TEST_F(MeshCache, StoresOnceThenReturnsTheSameMeshBitForBit) {
   EXPECT_TRUE(same_mesh(second.mesh, column_));
   ASSERT_EQ(files().size(), 1u);  // no temporary file left behind
   EXPECT_EQ(files()[0].extension(), ".mesh");
+}
+
+// The column's regions: per layer, from the bottom; stored and read back by the cache.
+TEST_F(MeshCache, ColumnRegionsFollowTheLayersAndAreStored) {
+  biphasic::ColumnSpec spec;
+  spec.nx = 2;
+  spec.nz = 4;
+  spec.region_names = {"bone", "cartilage"};
+  spec.region_tops = {0.75, 1.0};
+  column_ = biphasic::generate_column(spec);
+  ASSERT_EQ(column_.tet_region.size(), column_.tets.size());
+  EXPECT_EQ(column_.region_names, (std::vector<std::string>{"bone", "cartilage"}));
+  for (std::size_t t = 0; t < column_.tets.size(); ++t) {
+    double z = 0.0;
+    for (int c = 0; c < 4; ++c) z += 0.25 * column_.nodes[column_.tets[t][c]][2];
+    EXPECT_EQ(column_.tet_region[t], z < 0.75 ? 0 : 1) << "tet " << t;
+  }
+  fetch("column with regions");
+  const CachedMesh cached = fetch("column with regions");
+  EXPECT_TRUE(cached.from_cache);
+  EXPECT_TRUE(same_mesh(cached.mesh, column_));
+  spec.region_tops = {0.6, 1.0};  // not a layer interface
+  EXPECT_THROW(biphasic::generate_column(spec), std::runtime_error);
+  spec.region_tops = {0.75, 0.9};  // short of the top
+  EXPECT_THROW(biphasic::generate_column(spec), std::runtime_error);
 }
 
 TEST_F(MeshCache, AnotherDescriptionIsAnotherMesh) {

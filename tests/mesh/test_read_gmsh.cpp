@@ -176,11 +176,17 @@ TEST(MeshReadGmsh, BinaryFilesWrittenByGmshAreRead) {
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::open(fixture(name));
     gmsh::option::setNumber("Mesh.Binary", 1);
-    gmsh::vectorpair volumes;  // a physical volume, so that the tets are written
-    gmsh::model::getEntities(volumes, 3);
-    std::vector<int> tags;
-    for (const auto& [dim, tag] : volumes) tags.push_back(tag);
-    gmsh::model::addPhysicalGroup(3, tags);
+    // A physical volume, so that the tets are written (unless the file has one: a second one
+    // over the same tets would put them in two regions, which the reader refuses).
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups, 3);
+    if (groups.empty()) {
+      gmsh::vectorpair volumes;
+      gmsh::model::getEntities(volumes, 3);
+      std::vector<int> tags;
+      for (const auto& [dim, tag] : volumes) tags.push_back(tag);
+      gmsh::model::addPhysicalGroup(3, tags);
+    }
     gmsh::option::setNumber("Mesh.MshFileVersion", name[11] == '2' ? 2.2 : 4.1);
     const std::string binary = dir.file(std::string("binary_") + name);
     gmsh::write(binary);
@@ -188,7 +194,29 @@ TEST(MeshReadGmsh, BinaryFilesWrittenByGmshAreRead) {
     Mesh mesh;
     EXPECT_NO_THROW(mesh = biphasic::read_gmsh(binary)) << name;
     EXPECT_FALSE(mesh.tets.empty()) << name;
+    EXPECT_EQ(mesh.region_names, std::vector<std::string>{"solid"}) << name;
   }
+}
+
+// A tet in two physical volumes of different names is refused, naming its element tag.
+TEST(MeshReadGmsh, TetInTwoPhysicalVolumesIsAnError) {
+  ScratchDir dir;
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(fixture("two_tet10_v41.msh"));
+  gmsh::vectorpair volumes;
+  gmsh::model::getEntities(volumes, 3);
+  std::vector<int> tags;
+  for (const auto& [dim, tag] : volumes) tags.push_back(tag);
+  const int group = gmsh::model::addPhysicalGroup(3, tags);
+  gmsh::model::setPhysicalName(3, group, "bone");
+  const std::string path = dir.file("two_volumes.msh");
+  gmsh::write(path);
+  gmsh::finalize();
+  const std::string error = error_of(path);
+  EXPECT_NE(error.find("is in two physical volumes"), std::string::npos) << error;
+  EXPECT_NE(error.find("'bone'"), std::string::npos) << error;
+  EXPECT_NE(error.find("element tag"), std::string::npos) << error;
 }
 
 TEST(MeshReadGmsh, BoundaryNodeOutsideTheTetsIsAnError) {
@@ -375,6 +403,33 @@ TEST(MeshReadGmsh, WrittenQuarterCylinderReadsBackWithCurvedEdgeNodes) {
     }
   }
   EXPECT_GT(smallest_sag, 0.0);  // horizontal chords cut inside the circle
+}
+
+TEST(MeshReadGmsh, PhysicalVolumesBecomeRegions) {
+  const Mesh mesh = biphasic::read_gmsh(fixture("two_regions_tet4_v22.msh"));
+  ASSERT_EQ(mesh.tets.size(), 2u);
+  ASSERT_EQ(mesh.region_names.size(), 2u);
+  ASSERT_EQ(mesh.tet_region.size(), 2u);
+  // The tet with node tag 1 (the origin) is the first tet of the file: "cartilage".
+  for (std::size_t t = 0; t < 2; ++t) {
+    bool has_origin = false;
+    for (int c = 0; c < 4; ++c) {
+      const Point& x = mesh.nodes[static_cast<std::size_t>(mesh.tets[t][c])];
+      has_origin = has_origin || (x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0);
+    }
+    EXPECT_EQ(mesh.region_names[static_cast<std::size_t>(mesh.region_of(static_cast<Index>(t)))],
+              has_origin ? "cartilage" : "9");
+  }
+  EXPECT_GE(mesh.find_region("cartilage"), 0);
+  EXPECT_GE(mesh.find_region("9"), 0);
+  EXPECT_EQ(mesh.find_region("bone"), -1);
+  EXPECT_NE(mesh.find_boundary("base"), nullptr);
+}
+
+TEST(MeshReadGmsh, OnePhysicalVolumeIsOneRegion) {
+  const Mesh mesh = biphasic::read_gmsh(fixture("inverted_tet4_v22.msh"));
+  EXPECT_EQ(mesh.region_names, std::vector<std::string>{"solid"});
+  EXPECT_EQ(mesh.tet_region, std::vector<int>{0});
 }
 
 }  // namespace

@@ -95,5 +95,64 @@ TEST(Assembly, SurfaceLoadsSumToResultants) {
   EXPECT_NEAR(flux, 1e-3 * 1.5, 1e-16);
 }
 
+// Two material regions: each element runs its own region's laws. An element of the region with
+// its own [[region]] entry gives exactly what a one-material problem of that material gives
+// (residual, Jacobian, GLS coefficient); an element of the other region what [material] gives.
+TEST(Assembly, RegionsUseTheirOwnLaws) {
+  Mesh mesh = test::box_mesh({2, 1, 2}, {1.0, 1.0, 2.0});
+  mesh.region_names = {"lower", "upper"};
+  mesh.tet_region.resize(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double z = 0.0;
+    for (int c = 0; c < 4; ++c)
+      z += 0.25 * mesh.nodes[static_cast<std::size_t>(mesh.tets[t][c])][2];
+    mesh.tet_region[t] = z < 1.0 ? 0 : 1;
+  }
+  check_mesh(mesh);
+  Config regions = column_config(true);
+  RegionConfig upper{"upper", regions.material};
+  upper.material.mu = 2.0;
+  upper.material.permeability = 4e-2;
+  regions.regions = {upper};
+  Config only_upper = column_config(true);
+  only_upper.material = upper.material;
+  const Config only_material = column_config(true);
+
+  BiphasicProblem problem(mesh, regions);
+  BiphasicProblem reference_upper(mesh, only_upper);
+  BiphasicProblem reference_lower(mesh, only_material);
+  EXPECT_EQ(problem.oedometric_modulus(), 0.2 + 2.0 * 2.0);  // the largest H_A
+  const Index n = problem.size();
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  std::vector<double> y(n), ydot(n);
+  for (Index i = 0; i < n; ++i) {
+    y[i] = (i < problem.num_u() ? 0.03 : 0.05) * d(gen);
+    ydot[i] = 0.01 * d(gen);
+  }
+  int counts[2] = {0, 0};
+  for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e) {
+    const int region = mesh.region_of(e);
+    ++counts[region];
+    BiphasicProblem& same = region == 1 ? reference_upper : reference_lower;
+    BiphasicProblem& other = region == 1 ? reference_lower : reference_upper;
+    EXPECT_EQ(problem.laws_of(e).p_wave_modulus(), same.laws_of(e).p_wave_modulus());
+    EXPECT_EQ(problem.gls_coefficient(e), same.gls_coefficient(e));
+    ElementOutput a, b, c;
+    problem.element(e, y.data(), ydot.data(), true, a);
+    same.element(e, y.data(), ydot.data(), true, b);
+    other.element(e, y.data(), ydot.data(), true, c);
+    EXPECT_EQ((a.residual - b.residual).norm(), 0.0) << "element " << e;
+    EXPECT_EQ((a.dfdy - b.dfdy).norm(), 0.0) << "element " << e;
+    EXPECT_GT((a.residual - c.residual).norm(), 1e-6 * a.residual.norm()) << "element " << e;
+  }
+  EXPECT_GT(counts[0], 0);
+  EXPECT_GT(counts[1], 0);
+
+  Config unknown = regions;
+  unknown.regions[0].name = "bone";
+  EXPECT_THROW(BiphasicProblem(mesh, unknown), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace biphasic

@@ -38,12 +38,24 @@ struct ConfinedRamp {
   double permeability_kappa = 0.0;
   double permeability_M = 0.0;
   double solid_fraction = 0.0;  ///< φ₀, used when κ or M is not zero
+  /// Layers of different permeability, from the impermeable bottom (Z = 0) to the drained top:
+  /// each a fraction of h (> 0, the fractions summing to 1 within 1e-12) and its k₀ [mm⁴/(N s)],
+  /// which replaces `permeability` in that layer (κ, M and φ₀ are shared). Empty: one layer of
+  /// k₀ = `permeability`. The solid is the same in every layer, so λ_z is continuous across an
+  /// interface (so are the pore pressure and the effective stress). Only the finite-strain
+  /// reference takes layers; the linear solution refuses them.
+  struct Layer {
+    double fraction = 1.0;
+    double permeability = 1e-3;
+  };
+  std::vector<Layer> layers;
 };
 
 /// The column's permeability k(λ_z) [mm⁴/(N s)] (k₀ when κ = M = 0); throws if λ_z ≤ φ₀.
 double confined_permeability(const ConfinedRamp& c, double stretch);
 
-/// Linear theory (Mow et al. 1980): platen stress σ(t) [MPa] at time t ≥ 0 [s]. The constant
+/// Linear theory (Mow et al. 1980): platen stress σ(t) [MPa] at time t ≥ 0 [s]. Throws
+/// std::invalid_argument if `c.layers` is not empty. The constant
 /// part of the series is summed in closed form; for c t < 0.1 h² (c = H_A k) the equivalent
 /// short-time form σ_ramp = −(H_A V₀ h/c) [2√(T/π) + 4√T Σ_{m≥1} i erfc(m/√T)], T = c t/h², is
 /// used.
@@ -62,7 +74,9 @@ struct ConfinedReferenceResolution {
 };
 
 /// Finite-strain reference: platen stress σ(t) [MPa] (first Piola–Kirchhoff zz) at each of
-/// `times` [s] (any order, ≥ 0). P1 elements with consistent mass on a grid graded toward the
+/// `times` [s] (any order, ≥ 0). With `c.layers`, each element's Kirchhoff potential is scaled
+/// by its layer's k₀/k: the grid node nearest each interface is moved onto it, so every element
+/// lies in one layer. P1 elements with consistent mass on a grid graded toward the
 /// drained top (cell sizes from 0.07 h/N to 4 h/N), variable-step BDF2 on time grids graded as
 /// (i/M)⁴ from t = 0 and from t₀ (where the loading rate jumps), Newton with tridiagonal solves,
 /// cubic interpolation in i/M to the requested times, and Richardson extrapolation. With the

@@ -61,6 +61,14 @@ struct MaterialConfig {
   double beta = 0.0;            ///< β ≥ 0, exponential stiffening of the Holmes–Mow solid
 };
 
+/// A [[region]] entry: the material of the mesh region `name` (a physical volume of a .msh
+/// file, or a region of the generated column). Keys the entry omits are inherited from
+/// [material]; mesh regions without an entry use [material] itself.
+struct RegionConfig {
+  std::string name;
+  MaterialConfig material;
+};
+
 enum class BcType {
   Displacement,    ///< u·e_component = value · curve(t) [mm]
   Symmetry,        ///< zero normal displacement on an axis-aligned plane
@@ -261,6 +269,7 @@ struct Config {
   std::string title;
   MeshConfig mesh;
   MaterialConfig material;
+  std::vector<RegionConfig> regions;  ///< [[region]] entries, in file order
   std::map<std::string, LoadCurve> curves;
   std::vector<BoundaryCondition> bcs;
   VolumeLoadConfig loads;

@@ -53,12 +53,21 @@ struct Mesh {
   /// Per node, its tag in the .msh file it was read from (−1 for an edge node made here);
   /// empty for generated meshes. Messages name nodes by this tag when there is one.
   std::vector<Index> file_tags;
+  /// Material regions: per tetrahedron, an index into `region_names`. Both empty: one unnamed
+  /// region. A .msh file's physical volumes become regions (docs/model_layer.md, *Regions*);
+  /// the column generator makes them from mesh.column.regions.
+  std::vector<int> tet_region;
+  std::vector<std::string> region_names;
 
   Index num_nodes() const { return static_cast<Index>(nodes.size()); }
   /// The boundary with this name, or nullptr.
   const Boundary* find_boundary(const std::string& name) const;
   /// Names of all boundaries, in stored order.
   std::vector<std::string> boundary_names() const;
+  /// Region index of tetrahedron t (0 when the mesh has no regions).
+  int region_of(Index t) const { return tet_region.empty() ? 0 : tet_region[t]; }
+  /// The index of the region with this name, or −1.
+  int find_region(const std::string& name) const;
   /// The node set with this name, or nullptr.
   const NodeSet* find_node_set(const std::string& name) const;
   /// "node 12 (file tag 40) at (1, 2, 3) mm": how messages name node n.
@@ -87,12 +96,17 @@ void orient_boundary_faces(Mesh& mesh);
 /// Checks every Mesh invariant: indices in range, corners < num_vertices ≤ edge nodes, every
 /// vertex is a corner of some tet, one edge node per vertex pair shared by all tets and
 /// boundary faces using that edge, boundary corners are vertices, positive tet volumes, node
-/// sets' nodes in range, and no name shared by two sets (surface, point or curve). Throws
+/// sets' nodes in range, no name shared by two sets (surface, point or curve), and regions
+/// consistent (one index per tet below the number of names, names distinct). Throws
 /// std::runtime_error describing the first violation found.
 void check_mesh(const Mesh& mesh);
 
 /// The node-set part of check_mesh alone: nodes in range, no name shared by a surface, point
 /// or curve. For a mesh whose other invariants check_mesh has already confirmed.
 void check_node_sets(const Mesh& mesh);
+
+/// The region part of check_mesh alone: tet_region empty or one entry per tet, each an index
+/// into region_names, names distinct.
+void check_regions(const Mesh& mesh);
 
 }  // namespace biphasic

@@ -57,6 +57,12 @@ struct ColumnSpec {
   /// Thickness of the thickest layer over that of the thinnest (≥ 1; 1 = uniform). Needs
   /// nz ≥ 2 when grading toward one face, nz ≥ 3 toward both.
   double grading_ratio = 1.0;
+  /// Material regions stacked in z, from the bottom: region r, named region_names[r], spans
+  /// [region_tops[r − 1] (0 for the first), region_tops[r]] [mm]. Every top must be a layer
+  /// interface (column_layer_z, within 1e-9 · height), increasing, the last one = height; names
+  /// distinct and not empty; the lists of equal length. Both empty: a mesh without regions.
+  std::vector<std::string> region_names;
+  std::vector<double> region_tops;
 };
 
 /// Most cells (nx · ny · nz) of a column: 6e8 tets, far beyond any machine's memory; it only

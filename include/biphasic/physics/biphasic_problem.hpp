@@ -73,8 +73,13 @@ class BiphasicProblem final : public SemidiscreteSystem {
                 double* rate_values = nullptr) override;
   /// The quadrature-point geometry of element e (reference configuration).
   const std::vector<PointGeometry>& point_geometry(Index e) const { return geometry_[e]; }
-  /// The material laws of the case.
-  const MaterialLaws& laws() const { return laws_; }
+  /// The material laws of element e: those of its mesh region's [[region]] entry, or of
+  /// [material] (docs/model_layer.md, *Regions*).
+  const MaterialLaws& laws_of(Index e) const {
+    return laws_[element_law_.empty() ? 0 : static_cast<std::size_t>(element_law_[e])];
+  }
+  /// The distinct law sets in use (one per mesh region with its own material, [material] first).
+  const std::vector<MaterialLaws>& all_laws() const { return laws_; }
   /// The element kernel's output for element e at the global state (for tests).
   void element(Index e, const double* y, const double* ydot, bool with_jacobian,
                ElementOutput& out) const;
@@ -131,8 +136,9 @@ class BiphasicProblem final : public SemidiscreteSystem {
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const override;
 
-  /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa].
-  double oedometric_modulus() const { return laws_.p_wave_modulus(); }
+  /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa]; with
+  /// several regions the largest of their H_A (the stiffest material sets the force scale).
+  double oedometric_modulus() const { return modulus_; }
   bool has_gls() const override { return !gls_c_.empty(); }
   bool has_flux_perturbation() const override { return !flux_beta_.empty(); }
   /// Smallest GLS relaxation time min_e c_e / H_A over the elements [s] (0 without GLS).
@@ -195,7 +201,11 @@ class BiphasicProblem final : public SemidiscreteSystem {
 
   const Mesh& mesh_;
   std::map<std::string, LoadCurve> curves_;
-  MaterialLaws laws_;
+  /// Law sets: [material]'s first, then one per [[region]] entry used by the mesh.
+  std::vector<MaterialLaws> laws_;
+  /// Per element, its index into laws_; empty when every element uses laws_[0].
+  std::vector<int> element_law_;
+  double modulus_ = 0.0;         ///< largest H_A over laws_ [MPa]
   double volume_rate_dt_ = 0.0;  ///< ElementCoefficients::volume_rate_dt [s]
   std::vector<std::vector<PointGeometry>> geometry_;
   std::vector<Eigen::Matrix<double, 10, 1>> point_p2_;  ///< P2 values at the rule's points
