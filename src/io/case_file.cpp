@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "biphasic/material/material_laws.hpp"
 #include "biphasic/time/time_integrator.hpp"
 #include "case_schema.hpp"
 
@@ -756,13 +757,6 @@ std::string shown_at(const toml::table& root, const std::string& path,
   return node == nullptr ? fallback : show(*node);
 }
 
-/// A number with 6 significant digits, for derived quantities in messages.
-std::string short_number(double x) {
-  std::array<char, 32> buffer{};
-  std::snprintf(buffer.data(), buffer.size(), "%.6g", x);
-  return buffer.data();
-}
-
 // A key that applies only to some values of a choice key (mesh.source,
 // material.permeability_law): `owner` names those values for the message.
 template <class Choice>
@@ -792,35 +786,83 @@ void refuse_keys_of_other_choices(const toml::table& root, Problems& problems,
   }
 }
 
-/// The parameters of a strain-dependent permeability law given while another law is chosen
-/// (they would be ignored): errors naming the key and the law that uses it.
-void check_permeability_law_keys(const toml::table& root, const Config& config,
-                                 Problems& problems) {
-  using L = PermeabilityLawType;
-  constexpr const char* kBoth = "material.permeability_law = \"holmes_mow\" and \"exponential\"";
-  static const std::vector<OwnedKey<L>> rules{
-      {"material.solid_fraction", {L::HolmesMow, L::Exponential}, kBoth},
-      {"material.permeability_kappa", {L::HolmesMow}, "material.permeability_law = \"holmes_mow\""},
-      {"material.permeability_M", {L::HolmesMow, L::Exponential}, kBoth},
-  };
-  refuse_keys_of_other_choices(root, problems, "material.permeability_law", "\"constant\"",
-                               config.material.permeability_law, rules);
+/// `"a"`, `"a" and "b"`, `"a", "b" and "c"`.
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quote(names[i]);
+  }
+  return out;
 }
 
-/// The parameters of the solid law not chosen (they would be ignored): errors naming the key.
-void check_solid_law_keys(const toml::table& root, const Config& config, Problems& problems) {
-  using L = SolidLawType;
-  constexpr const char* kNeo = "material.solid_law = \"neo_hookean\"";
-  constexpr const char* kHm = "material.solid_law = \"holmes_mow\"";
-  static const std::vector<OwnedKey<L>> rules{
-      {"material.lambda", {L::NeoHookean}, kNeo},
-      {"material.mu", {L::NeoHookean}, kNeo},
-      {"material.youngs_modulus", {L::HolmesMow}, kHm},
-      {"material.poissons_ratio", {L::HolmesMow}, kHm},
-      {"material.beta", {L::HolmesMow}, kHm},
+/// The material section's law choices and parameters against the registered laws
+/// (material_laws.hpp): a parameter no chosen law reads is an error naming the laws that read
+/// it (it would be ignored), and each chosen law's own checks across its parameters run.
+void check_material_laws(const toml::table& root, const MaterialConfig& material,
+                         Problems& problems) {
+  const auto& families = material_law_families();
+  for (const LawFamily& family : families) {
+    if (problems.is_bad("material." + family.key)) return;
+  }
+  auto chosen_law = [&material](const LawFamily& family) -> const LawDescription* {
+    for (const LawDescription& law : family.laws) {
+      if (law.name == material.*family.chosen) return &law;
+    }
+    return nullptr;
   };
-  refuse_keys_of_other_choices(root, problems, "material.solid_law", "\"neo_hookean\"",
-                               config.material.solid_law, rules);
+  auto reads = [](const LawDescription& law, const std::string& name) {
+    return std::any_of(law.parameters.begin(), law.parameters.end(),
+                       [&name](const LawParameter& p) { return p.name == name; });
+  };
+  std::set<std::string> visited;
+  for (const LawFamily& family : families) {
+    for (const LawDescription& law : family.laws) {
+      for (const LawParameter& parameter : law.parameters) {
+        const std::string path = "material." + parameter.name;
+        const toml::node* node = find_path(root, path);
+        if (!visited.insert(parameter.name).second || node == nullptr || problems.is_bad(path))
+          continue;
+        std::vector<std::string> owners, chosen;
+        bool read = false;
+        for (const LawFamily& f : families) {
+          std::vector<std::string> readers;
+          for (const LawDescription& l : f.laws) {
+            if (reads(l, parameter.name)) readers.push_back(l.name);
+          }
+          if (readers.empty()) continue;
+          const LawDescription* c = chosen_law(f);
+          read = read || (c != nullptr && reads(*c, parameter.name));
+          owners.push_back("material." + f.key + " = " + quoted_list(readers));
+          chosen.push_back("material." + f.key + " = " +
+                           shown_at(root, "material." + f.key, quote(f.laws.front().name)));
+        }
+        if (read) continue;
+        std::string owner_text, chosen_text;
+        for (std::size_t i = 0; i < owners.size(); ++i) {
+          owner_text += (i == 0 ? "" : " or ") + owners[i];
+          chosen_text += (i == 0 ? "" : " or ") + chosen[i];
+        }
+        problems.bad_value(path, show(*node),
+                           "applies only to " + owner_text + ", not to " + chosen_text);
+      }
+    }
+  }
+  const ParameterSource source = [&material](const std::string& name) {
+    return material.get(name);
+  };
+  for (const LawFamily& family : families) {
+    const LawDescription* law = chosen_law(family);
+    if (law == nullptr || !law->check) continue;
+    const bool clean = std::none_of(
+        law->parameters.begin(), law->parameters.end(),
+        [&problems](const LawParameter& p) { return problems.is_bad("material." + p.name); });
+    if (!clean) continue;
+    if (const auto problem = law->check(source, "material.")) {
+      const std::string path = "material." + problem->key;
+      problems.bad_value(path, shown_at(root, path, format_number(material.get(problem->key))),
+                         problem->message);
+    }
+  }
 }
 
 /// mesh.column.region_names and region_tops: equal lengths, tops increasing, each a layer
@@ -964,18 +1006,6 @@ void check_reaction_boundaries(const toml::table& root, const Config& config, Pr
   }
 }
 
-/// λ + ⅔μ > 0 for the Neo-Hookean solid.
-void check_neo_hookean_bulk(const toml::table& root, const MaterialConfig& material,
-                            Problems& problems) {
-  const double bulk_like = material.lambda + 2.0 / 3.0 * material.mu;
-  if (material.solid_law == SolidLawType::NeoHookean && !problems.is_bad("material.lambda") &&
-      !problems.is_bad("material.mu") && !(bulk_like > 0.0)) {
-    problems.bad_value(
-        "material.lambda", shown_at(root, "material.lambda", format_number(material.lambda)),
-        "material.lambda + 2/3 material.mu must be > 0 (here " + short_number(bulk_like) + " MPa)");
-  }
-}
-
 /// Reads [[region]] entries: a name, distinct and not empty, and the keys of [material], each
 /// omitted key inherited from [material]. The [material] checks run on the entry with its keys
 /// named region[i].key: the entry is read as a [material] table (its choice keys, when it does
@@ -1021,12 +1051,12 @@ void read_regions(const toml::table& root, Config& config, Problems& problems) {
 
     toml::table material = table;
     material.erase("name");
-    for (const char* choice : {"solid_law", "permeability_law"}) {
-      const std::string path = std::string("material.") + choice;
+    for (const LawFamily& family : material_law_families()) {
+      const std::string path = "material." + family.key;
       const toml::node* inherited = find_path(root, path);
-      if (material.get(choice) == nullptr && inherited != nullptr && !problems.is_bad(path) &&
+      if (material.get(family.key) == nullptr && inherited != nullptr && !problems.is_bad(path) &&
           inherited->as_string() != nullptr) {
-        material.insert_or_assign(choice, inherited->as_string()->get());
+        material.insert_or_assign(family.key, inherited->as_string()->get());
       }
     }
     toml::table shaped;
@@ -1045,9 +1075,7 @@ void read_regions(const toml::table& root, Config& config, Problems& problems) {
         key.store(one, *read.value);
       }
     }
-    check_permeability_law_keys(shaped, one, problems);
-    check_solid_law_keys(shaped, one, problems);
-    check_neo_hookean_bulk(shaped, one.material, problems);
+    check_material_laws(shaped, one.material, problems);
     problems.set_alias("", "");
     region.material = one.material;
     if (named) config.regions.push_back(region);
@@ -1057,8 +1085,6 @@ void read_regions(const toml::table& root, Config& config, Problems& problems) {
 void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
                         Problems& problems) {
   check_mesh_source_keys(root, config, problems);
-  check_permeability_law_keys(root, config, problems);
-  check_solid_law_keys(root, config, problems);
   check_reaction_boundaries(root, config, problems);
   if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
       config.time.dt > config.time.t_end) {
@@ -1086,7 +1112,7 @@ void check_cross_fields(const toml::table& root, const std::string& base_dir, Co
                            " (BDF's dJ/dt is the exact rate of its own solution)");
   }
 
-  check_neo_hookean_bulk(root, config.material, problems);
+  check_material_laws(root, config.material, problems);
 
   if (!problems.is_bad("output.line_points") && config.output.line_points == 1) {
     problems.bad_value("output.line_points", "1",

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/material/material_laws.hpp"
 
 namespace biphasic::case_schema {
 
@@ -44,19 +45,6 @@ const Names<Stabilisation>& stabilisation_names() {
   static const Names<Stabilisation> names{{"none", Stabilisation::None},
                                           {"gls", Stabilisation::Gls},
                                           {"flux_perturbation", Stabilisation::FluxPerturbation}};
-  return names;
-}
-
-const Names<PermeabilityLawType>& permeability_law_names() {
-  static const Names<PermeabilityLawType> names{{"constant", PermeabilityLawType::Constant},
-                                                {"holmes_mow", PermeabilityLawType::HolmesMow},
-                                                {"exponential", PermeabilityLawType::Exponential}};
-  return names;
-}
-
-const Names<SolidLawType>& solid_law_names() {
-  static const Names<SolidLawType> names{{"neo_hookean", SolidLawType::NeoHookean},
-                                         {"holmes_mow", SolidLawType::HolmesMow}};
   return names;
 }
 
@@ -288,6 +276,66 @@ std::array<Need, kBcTypeCount> needs(std::initializer_list<BcType> required,
   return out;
 }
 
+Range range_of(const ParameterBounds& b) { return Range{b.min, b.max, b.min_open, b.max_open}; }
+
+std::string joined(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string out;
+  for (const auto& part : parts) out += (out.empty() ? "" : separator) + part;
+  return out;
+}
+
+/// The keys of [material], derived from the registered laws (material_laws.hpp): per family
+/// the choice key, then each parameter of its laws once, its help naming the laws that read it
+/// unless every law of the family does.
+std::vector<Key<Config>> material_keys() {
+  using C = Config;
+  std::vector<Key<C>> keys;
+  std::vector<std::string> emitted;
+  for (const LawFamily& family : material_law_families()) {
+    std::vector<std::string> names, described;
+    for (const LawDescription& law : family.laws) {
+      names.push_back(law.name);
+      std::vector<std::string> keys_of_law;
+      for (const LawParameter& p : law.parameters) keys_of_law.push_back("material." + p.name);
+      described.push_back(law.name + " (" + law.summary + "; " + joined(keys_of_law, ", ") + ")");
+    }
+    auto choice = make_key<C>("material." + family.key, Kind::Choice, "",
+                              family.what + ": " + joined(described, "; ") +
+                                  ". A parameter of a law not chosen is an error.");
+    choice.choices = names;
+    const auto chosen = family.chosen;
+    choice.store = [chosen](C& c, const Value& v) {
+      c.material.*chosen = std::get<std::string>(v);
+    };
+    choice.fetch = [chosen](const C& c) -> Value { return c.material.*chosen; };
+    keys.push_back(choice);
+
+    for (const LawDescription& law : family.laws) {
+      for (const LawParameter& p : law.parameters) {
+        if (std::find(emitted.begin(), emitted.end(), p.name) != emitted.end()) continue;
+        emitted.push_back(p.name);
+        std::vector<std::string> readers;
+        for (const LawDescription& other : family.laws) {
+          for (const LawParameter& q : other.parameters) {
+            if (q.name == p.name) readers.push_back(other.name);
+          }
+        }
+        std::string help = p.help;
+        if (readers.size() < family.laws.size()) {
+          help += " Read by material." + family.key + " = " + joined(readers, ", ") + ".";
+        }
+        const std::string name = p.name;
+        auto key = make_key<C>("material." + name, Kind::Number, p.unit, help);
+        key.range = range_of(p.bounds);
+        key.store = [name](C& c, const Value& v) { c.material.set(name, std::get<double>(v)); };
+        key.fetch = [name](const C& c) -> Value { return c.material.get(name); };
+        keys.push_back(key);
+      }
+    }
+  }
+  return keys;
+}
+
 std::vector<Key<Config>> build_global_keys() {
   using C = Config;
   std::vector<Key<C>> keys;
@@ -423,54 +471,7 @@ std::vector<Key<Config>> build_global_keys() {
       "Distance from the surface over which the element size grows back to lc.",
       [](auto& c) -> auto& { return c.mesh.sphere_octant.grading_distance; }));
 
-  keys.push_back(choice_key<C>(
-      "material.solid_law", solid_law_names(),
-      "Solid law of the skeleton: neo_hookean (material.lambda, material.mu) or holmes_mow "
-      "(Holmes & Mow 1990 as in FEBio: material.youngs_modulus, material.poissons_ratio, "
-      "material.beta). Keys of the other law are an error.",
-      [](auto& c) -> auto& { return c.material.solid_law; }));
-  keys.push_back(number_key<C>(
-      "material.lambda", Range{}, "MPa",
-      "Lamé constant lambda of the neo_hookean solid; lambda + 2/3 mu must be > 0.",
-      [](auto& c) -> auto& { return c.material.lambda; }));
-  keys.push_back(number_key<C>(
-      "material.mu", above(0), "MPa", "Shear modulus mu of the neo_hookean solid.",
-      [](auto& c) -> auto& { return c.material.mu; }));
-  keys.push_back(number_key<C>(
-      "material.youngs_modulus", above(0), "MPa",
-      "Young's modulus E of the holmes_mow solid (small-strain limit).",
-      [](auto& c) -> auto& { return c.material.youngs_modulus; }));
-  keys.push_back(number_key<C>(
-      "material.poissons_ratio", strictly_between(-1, 0.5), "",
-      "Poisson's ratio nu of the holmes_mow solid (small-strain limit).",
-      [](auto& c) -> auto& { return c.material.poissons_ratio; }));
-  keys.push_back(number_key<C>(
-      "material.beta", at_least(0), "",
-      "Exponential stiffening coefficient beta of the holmes_mow solid, W = H_A/(4 beta) "
-      "(exp(Q) - 1); beta = 0 is the limit W = q/4 (no stiffening).",
-      [](auto& c) -> auto& { return c.material.beta; }));
-  keys.push_back(number_key<C>(
-      "material.permeability", above(0), "mm^4/(N s)",
-      "Permeability k of the solid skeleton; with a strain-dependent law, k0 = k(J = 1).",
-      [](auto& c) -> auto& { return c.material.permeability; }));
-  keys.push_back(choice_key<C>(
-      "material.permeability_law", permeability_law_names(),
-      "How k depends on J = det F: constant (k = k0); holmes_mow (k0 ((J - phi0)/(1 - phi0))^kappa "
-      "exp(M (J^2 - 1)/2), Holmes & Mow 1990); exponential (k0 exp(M (J - 1)/(J - phi0))).",
-      [](auto& c) -> auto& { return c.material.permeability_law; }));
-  keys.push_back(number_key<C>(
-      "material.solid_fraction", strictly_between(0, 1), "",
-      "Solid volume fraction phi0 of the reference state (holmes_mow, exponential); k -> 0 as "
-      "J -> phi0, and J <= phi0 fails the element.",
-      [](auto& c) -> auto& { return c.material.solid_fraction; }));
-  keys.push_back(number_key<C>(
-      "material.permeability_kappa", at_least(0), "",
-      "Exponent kappa of the porosity ratio in the holmes_mow law.",
-      [](auto& c) -> auto& { return c.material.permeability_kappa; }));
-  keys.push_back(number_key<C>(
-      "material.permeability_M", at_least(0), "",
-      "Exponential coefficient M of the holmes_mow and exponential laws.",
-      [](auto& c) -> auto& { return c.material.permeability_M; }));
+  for (auto& key : material_keys()) keys.push_back(std::move(key));
 
   auto curve = make_key<C>("curves.<name>", Kind::Curve, "s, -",
                            "Named piecewise-linear load curve [[t, value], ...]: at least one "

@@ -7,6 +7,24 @@
 
 namespace biphasic {
 
+LawDescription HolmesMowSolid::describe() {
+  LawDescription d;
+  d.name = "holmes_mow";
+  d.summary =
+      "Holmes & Mow 1990 as FEBio implements it, W = H_A/(4 beta) (exp(Q) - 1), stress free "
+      "at F = I";
+  d.parameters = {
+      {"youngs_modulus", 1.0, ParameterBounds::above(0.0), "MPa",
+       "Young's modulus E (small-strain limit)."},
+      {"poissons_ratio", 0.2, ParameterBounds::between_open(-1.0, 0.5), "",
+       "Poisson's ratio nu (small-strain limit)."},
+      {"beta", 0.0, ParameterBounds::at_least(0.0), "",
+       "Exponential stiffening coefficient beta, W = H_A/(4 beta) "
+       "(exp(Q) - 1); beta = 0 is the limit W = q/4 (no stiffening)."},
+  };
+  return d;
+}
+
 namespace {
 
 /// The left Cauchy–Green tensor b = FFᵀ with its invariants, and q, e^Q of the law.

@@ -1,5 +1,8 @@
 #include "biphasic/material/material_laws.hpp"
 
+#include <stdexcept>
+#include <utility>
+
 namespace biphasic {
 
 double MaterialLaws::p_wave_modulus() const {
@@ -12,29 +15,89 @@ double MaterialLaws::reference_permeability() const {
 
 namespace {
 
-AnyPermeabilityLaw make_permeability_law(const MaterialConfig& m) {
-  switch (m.permeability_law) {
-    case PermeabilityLawType::HolmesMow:
-      return HolmesMowPermeability{m.permeability, m.solid_fraction, m.permeability_kappa,
-                                   m.permeability_M};
-    case PermeabilityLawType::Exponential:
-      return ExponentialPermeability{m.permeability, m.solid_fraction, m.permeability_M};
-    case PermeabilityLawType::Constant:
-      break;
+/// describe() of every alternative of `Variant`, in order.
+template <class Variant>
+std::vector<LawDescription> describe_all() {
+  return []<std::size_t... I>(std::index_sequence<I...>) {
+    static_assert((DescribedLaw<std::variant_alternative_t<I, Variant>> && ...));
+    return std::vector<LawDescription>{std::variant_alternative_t<I, Variant>::describe()...};
   }
-  return ConstantPermeability{m.permeability};
+  (std::make_index_sequence<std::variant_size_v<Variant>>{});
 }
 
-AnySolidLaw make_solid_law(const MaterialConfig& m) {
-  if (m.solid_law == SolidLawType::HolmesMow)
-    return HolmesMowSolid{m.youngs_modulus, m.poissons_ratio, m.beta};
-  return NeoHookean{m.lambda, m.mu};
+/// The alternative of `Variant` whose description is called `name`, built from `source`.
+template <class Variant>
+Variant make_law(const std::string& family, const std::string& name,
+                 const ParameterSource& source) {
+  std::optional<Variant> made;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (void)((std::variant_alternative_t<I, Variant>::describe().name == name
+                ? (made.emplace(std::variant_alternative_t<I, Variant>::from_parameters(source)),
+                   true)
+                : false) ||
+           ...);
+  }
+  (std::make_index_sequence<std::variant_size_v<Variant>>{});
+  if (!made) throw std::invalid_argument(family + " \"" + name + "\" is not a registered law");
+  return *std::move(made);
+}
+
+std::vector<LawFamily> build_families() {
+  std::vector<LawFamily> families{
+      {"solid_law", "Solid law of the skeleton", describe_all<AnySolidLaw>(),
+       &MaterialConfig::solid_law},
+      {"permeability_law", "How the permeability k depends on J = det F",
+       describe_all<AnyPermeabilityLaw>(), &MaterialConfig::permeability_law}};
+  // A parameter read by several laws must mean the same to each of them.
+  std::vector<const LawParameter*> seen;
+  for (const LawFamily& family : families) {
+    for (const LawDescription& law : family.laws) {
+      for (const LawParameter& p : law.parameters) {
+        for (const LawParameter* other : seen) {
+          if (other->name == p.name && !(*other == p)) {
+            throw std::logic_error("material law \"" + law.name + "\" declares parameter \"" +
+                                   p.name + "\" differently from another law");
+          }
+        }
+        seen.push_back(&p);
+      }
+    }
+  }
+  return families;
 }
 
 }  // namespace
 
+const std::vector<LawFamily>& material_law_families() {
+  static const std::vector<LawFamily> families = build_families();
+  return families;
+}
+
+const LawParameter* find_law_parameter(const std::string& name) {
+  for (const LawFamily& family : material_law_families()) {
+    for (const LawDescription& law : family.laws) {
+      for (const LawParameter& p : law.parameters) {
+        if (p.name == name) return &p;
+      }
+    }
+  }
+  return nullptr;
+}
+
+std::string default_solid_law() {
+  return std::variant_alternative_t<0, AnySolidLaw>::describe().name;
+}
+std::string default_permeability_law() {
+  return std::variant_alternative_t<0, AnyPermeabilityLaw>::describe().name;
+}
+
 MaterialLaws make_material_laws(const MaterialConfig& material) {
-  return {make_solid_law(material), make_permeability_law(material)};
+  const ParameterSource source = [&material](const std::string& name) {
+    return material.get(name);
+  };
+  return {
+      make_law<AnySolidLaw>("material.solid_law", material.solid_law, source),
+      make_law<AnyPermeabilityLaw>("material.permeability_law", material.permeability_law, source)};
 }
 
 }  // namespace biphasic

@@ -1,11 +1,36 @@
 #include "biphasic/material/neo_hookean.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace biphasic {
+
+LawDescription NeoHookean::describe() {
+  LawDescription d;
+  d.name = "neo_hookean";
+  d.summary =
+      "compressible Neo-Hookean, Psi = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2, the "
+      "paper's law";
+  d.parameters = {
+      {"lambda", 0.2, ParameterBounds::any(), "MPa",
+       "Lamé constant lambda; lambda + 2/3 mu must be > 0."},
+      {"mu", 0.5, ParameterBounds::above(0.0), "MPa", "Shear modulus mu."},
+  };
+  d.check = [](const ParameterSource& p,
+               const std::string& prefix) -> std::optional<ParameterProblem> {
+    const double bulk_like = p("lambda") + 2.0 / 3.0 * p("mu");
+    if (bulk_like > 0.0) return std::nullopt;
+    std::array<char, 32> shown{};
+    std::snprintf(shown.data(), shown.size(), "%.6g", bulk_like);
+    return ParameterProblem{"lambda", prefix + "lambda + 2/3 " + prefix + "mu must be > 0 (here " +
+                                          shown.data() + " MPa)"};
+  };
+  return d;
+}
 
 double checked_jacobian(const Mat3& F) {
   const double J = F.determinant();

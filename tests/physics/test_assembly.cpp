@@ -12,7 +12,7 @@ namespace {
 
 Config column_config(bool gls) {
   Config cfg;
-  cfg.material = {0.2, 0.5, 1e-2};
+  cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
   if (gls) cfg.stabilisation.type = Stabilisation::Gls;
   cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {1.0, 1.0}}};
   BoundaryCondition top{BcType::Displacement, "z1", 2, -0.05, {}, "ramp"};
@@ -111,8 +111,8 @@ TEST(Assembly, RegionsUseTheirOwnLaws) {
   check_mesh(mesh);
   Config regions = column_config(true);
   RegionConfig upper{"upper", regions.material};
-  upper.material.mu = 2.0;
-  upper.material.permeability = 4e-2;
+  upper.material.set("mu", 2.0);
+  upper.material.set("permeability", 4e-2);
   regions.regions = {upper};
   Config only_upper = column_config(true);
   only_upper.material = upper.material;

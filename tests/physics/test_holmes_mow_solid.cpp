@@ -209,10 +209,10 @@ TEST(HolmesMowSolid, ZeroBetaIsTheLimit) {
 
 TEST(HolmesMowSolid, RegistryBuildsTheChosenSolid) {
   MaterialConfig c;
-  c.solid_law = SolidLawType::HolmesMow;
-  c.youngs_modulus = 0.6;
-  c.poissons_ratio = 0.1;
-  c.beta = 0.4;
+  c.solid_law = "holmes_mow";
+  c.set("youngs_modulus", 0.6);
+  c.set("poissons_ratio", 0.1);
+  c.set("beta", 0.4);
   const MaterialLaws laws = make_material_laws(c);
   ASSERT_TRUE(std::holds_alternative<HolmesMowSolid>(laws.solid));
   const auto& m = std::get<HolmesMowSolid>(laws.solid);

@@ -16,7 +16,7 @@ TEST(PatchTest, HomogeneousDeformationAndPressure) {
   const Mesh mesh = test::box_mesh({2, 2, 2}, {1.0, 1.5, 0.8});
   for (bool gls : {false, true}) {
     Config cfg;
-    cfg.material = {0.2, 0.5, 1e-3};
+    cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-3);
     if (gls) cfg.stabilisation.type = Stabilisation::Gls;
     BiphasicProblem problem(mesh, cfg);
     Mat3 F0;

@@ -88,7 +88,7 @@ struct ColumnRun {
 ColumnRun run_column(VolumeRate form, double dt, double flux, double source) {
   const Mesh mesh = test::box_mesh({2, 2, 3}, {1.0, 1.0, 1.5});
   Config config;
-  config.material = {0.2, 0.5, 1e-2};
+  config.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
   config.stabilisation.type = Stabilisation::Gls;
   config.time.t_end = 4.0;
   config.time.dt = dt;

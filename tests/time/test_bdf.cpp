@@ -111,7 +111,7 @@ TEST(ConsistentStart, RateSatisfiesTheDifferentiatedSystem) {
 /// on a ramp, bottom fixed and sealed, lateral rollers.
 Config confined_column_config(Stabilisation stabilisation) {
   Config cfg;
-  cfg.material = {0.2, 0.5, 1e-2};
+  cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
   cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {100.0, 1.0}}};
   cfg.bcs = {{BcType::Displacement, "z1", 2, -0.2, {}, "ramp"},
              {BcType::Displacement, "z0", 2, 0.0, {}, ""},
@@ -312,7 +312,7 @@ TEST(Bdf, StopsAtLoadCurveKinkAndMatchesBackwardEuler) {
 TEST(Bdf, ConvergesAtItsMaximumOrder) {
   const Mesh mesh = test::box_mesh({1, 1, 8}, {1.0, 1.0, 4.0});
   Config cfg;
-  cfg.material = {0.2, 0.5, 1e-2};
+  cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
   cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {100.0, 1.0}}};
   cfg.bcs = {{BcType::Displacement, "z1", 2, -0.2, {}, "ramp"},
              {BcType::Displacement, "z0", 2, 0.0, {}, ""},

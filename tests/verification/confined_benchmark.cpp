@@ -12,14 +12,14 @@ namespace {
 /// The ramp of the case: material, thickness, final strain and ramp time.
 analytic::ConfinedRamp ramp_of(const Config& config) {
   analytic::ConfinedRamp c;
-  c.mu = config.material.mu;
-  c.lambda = config.material.lambda;
-  c.permeability = config.material.permeability;
-  if (config.material.permeability_law == PermeabilityLawType::HolmesMow) {
-    c.solid_fraction = config.material.solid_fraction;
-    c.permeability_kappa = config.material.permeability_kappa;
-    c.permeability_M = config.material.permeability_M;
-  } else if (config.material.permeability_law != PermeabilityLawType::Constant) {
+  c.mu = config.material.get("mu");
+  c.lambda = config.material.get("lambda");
+  c.permeability = config.material.get("permeability");
+  if (config.material.permeability_law == "holmes_mow") {
+    c.solid_fraction = config.material.get("solid_fraction");
+    c.permeability_kappa = config.material.get("permeability_kappa");
+    c.permeability_M = config.material.get("permeability_M");
+  } else if (config.material.permeability_law != "constant") {
     ADD_FAILURE() << "the confined reference has constant and Holmes-Mow permeability only";
   }
   c.thickness = config.mesh.column.height;

@@ -21,9 +21,9 @@ struct CryerSetup {
 CryerSetup setup_of(const Config& config) {
   CryerSetup s;
   s.radius = config.mesh.sphere_octant.radius;
-  const double lambda = config.material.lambda, mu = config.material.mu;
+  const double lambda = config.material.get("lambda"), mu = config.material.get("mu");
   s.nu = lambda / (2.0 * (lambda + mu));
-  s.c = config.material.permeability * (lambda + 2.0 * mu);
+  s.c = config.material.get("permeability") * (lambda + 2.0 * mu);
   for (const auto& bc : config.bcs)
     if (bc.type == BcType::NormalTraction && bc.boundary == "surface") s.load = bc.value;
   return s;

@@ -55,7 +55,7 @@ inline MeshResult solve_on_cube(int n, const StudyOptions& options,
 
   const Parameters& m = exact.parameters();
   Config cfg;
-  cfg.material = {m.lambda, m.mu, m.k};
+  cfg.material = MaterialConfig::neo_hookean(m.lambda, m.mu, m.k);
   cfg.quadrature_points = options.quadrature_points;
   cfg.stabilisation.type = Stabilisation::None;
   for (const char* face : {"bottom", "top", "x0", "x1", "y0", "y1"}) {

@@ -29,8 +29,8 @@ double load_of(const Config& config) {
 
 FirstStepOvershoot first_step_overshoot(const Mesh& mesh, Config config, double r) {
   const double h = config.mesh.column.height / config.mesh.column.nz;
-  const double c =
-      config.material.permeability * (config.material.lambda + 2.0 * config.material.mu);
+  const double c = config.material.get("permeability") *
+                   (config.material.get("lambda") + 2.0 * config.material.get("mu"));
   config.time.dt = r * h * h / c;
   config.time.t_end = config.time.dt;
   BiphasicProblem problem(mesh, config);

@@ -24,8 +24,8 @@ struct TerzaghiSetup {
 TerzaghiSetup setup_of(const Config& config) {
   TerzaghiSetup s;
   s.height = config.mesh.column.height;
-  s.HA = config.material.lambda + 2.0 * config.material.mu;
-  s.c = config.material.permeability * s.HA;
+  s.HA = config.material.get("lambda") + 2.0 * config.material.get("mu");
+  s.c = config.material.get("permeability") * s.HA;
   for (const auto& bc : config.bcs)
     if (bc.type == BcType::NormalTraction && bc.boundary == "top") s.q = bc.value;
   return s;

@@ -74,16 +74,16 @@ TEST(ConfinedCompression, TwoRegionColumnMatchesTheLayeredReference) {
   const Config& config = run.config;
   ASSERT_EQ(config.regions.size(), 1u);
   analytic::ConfinedRamp c;
-  c.mu = config.material.mu;
-  c.lambda = config.material.lambda;
-  c.permeability = config.material.permeability;
+  c.mu = config.material.get("mu");
+  c.lambda = config.material.get("lambda");
+  c.permeability = config.material.get("permeability");
   c.thickness = config.mesh.column.height;
   const PlatenRamp ramp = top_platen_ramp(config);
   c.strain = -ramp.displacement / c.thickness;
   c.ramp_time = ramp.ramp_time;
   const double interface = config.mesh.column.region_tops.at(0) / c.thickness;
-  c.layers = {{interface, config.material.permeability},
-              {1.0 - interface, config.regions[0].material.permeability}};
+  c.layers = {{interface, config.material.get("permeability")},
+              {1.0 - interface, config.regions[0].material.get("permeability")}};
   ASSERT_EQ(c.layers[1].permeability, 2.5e-4);
 
   const double area = config.mesh.column.width * config.mesh.column.depth;

@@ -27,11 +27,11 @@ UnconfinedSetup setup_of(const Config& config) {
   UnconfinedSetup s;
   s.radius = config.mesh.cylinder.radius;
   s.height = config.mesh.cylinder.height;
-  const double lambda = config.material.lambda, mu = config.material.mu;
+  const double lambda = config.material.get("lambda"), mu = config.material.get("mu");
   s.mu = mu;
   s.nu = lambda / (2.0 * (lambda + mu));
   s.young = mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
-  s.c = config.material.permeability * (lambda + 2.0 * mu);
+  s.c = config.material.get("permeability") * (lambda + 2.0 * mu);
   const PlatenRamp ramp = top_platen_ramp(config);
   s.strain = -ramp.displacement / s.height;
   s.ramp_time = ramp.ramp_time;

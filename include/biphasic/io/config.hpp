@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "biphasic/io/expression.hpp"
+#include "biphasic/material/material_config.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 
 namespace biphasic {
@@ -32,33 +33,6 @@ struct MeshConfig {
   SphereOctantSpec sphere_octant;
   std::string file;                     ///< .msh path (resolved relative to the case file's folder)
   bool ignore_memory_estimate = false;  ///< run even if the size guard expects too little memory
-};
-
-/// How the permeability depends on the volume ratio J (include/biphasic/material/).
-enum class PermeabilityLawType {
-  Constant,     ///< k = k₀
-  HolmesMow,    ///< k₀ ((J − φ₀)/(1 − φ₀))^κ exp(M (J² − 1)/2)
-  Exponential,  ///< k₀ exp(M (J − 1)/(J − φ₀))
-};
-
-/// The solid law of the skeleton (include/biphasic/material/).
-enum class SolidLawType {
-  NeoHookean,  ///< compressible Neo-Hookean, parameters λ, μ
-  HolmesMow,   ///< Holmes & Mow (1990) in FEBio's form, parameters E, ν, β
-};
-
-struct MaterialConfig {
-  double lambda = 0.2;         ///< Lamé λ of the Neo-Hookean law [MPa]
-  double mu = 0.5;             ///< shear modulus μ of the Neo-Hookean law [MPa]
-  double permeability = 1e-3;  ///< k₀, the permeability at J = 1 [mm⁴ N⁻¹ s⁻¹]
-  PermeabilityLawType permeability_law = PermeabilityLawType::Constant;
-  double solid_fraction = 0.2;  ///< φ₀, referential solid volume fraction (strain-dependent laws)
-  double permeability_kappa = 0.0;  ///< κ of Holmes–Mow
-  double permeability_M = 0.0;      ///< M of Holmes–Mow and of the exponential law
-  SolidLawType solid_law = SolidLawType::NeoHookean;
-  double youngs_modulus = 1.0;  ///< E of the Holmes–Mow solid [MPa]
-  double poissons_ratio = 0.2;  ///< ν of the Holmes–Mow solid, in (−1, 0.5)
-  double beta = 0.0;            ///< β ≥ 0, exponential stiffening of the Holmes–Mow solid
 };
 
 /// A [[region]] entry: the material of the mesh region `name` (a physical volume of a .msh

@@ -1,5 +1,6 @@
 // Constant spatial permeability (the paper's model): k(J) = k₀, dk/dJ = 0.
-// Case-file key: material.permeability = k₀ [mm⁴ N⁻¹ s⁻¹] (src/io/case_schema.cpp).
+// Case-file keys (describe()): material.permeability_law = "constant", material.permeability = k₀
+// [mm⁴ N⁻¹ s⁻¹].
 #pragma once
 
 #include "biphasic/material/permeability_law.hpp"
@@ -8,6 +9,13 @@ namespace biphasic {
 
 struct ConstantPermeability {
   double k0 = 1e-3;  ///< k₀ [mm⁴ N⁻¹ s⁻¹]
+
+  static LawDescription describe() {
+    return {"constant", "k = k0, the paper's model", {permeability_parameters::reference()}, {}};
+  }
+  static ConstantPermeability from_parameters(const ParameterSource& p) {
+    return {p("permeability")};
+  }
 
   double permeability(double /*J*/) const { return k0; }
   double permeability_derivative(double /*J*/) const { return 0.0; }

@@ -4,8 +4,9 @@
 //   dk/dJ = k(J) (κ/(J − φ₀) + M J)
 // with φ₀ the solid volume fraction in the reference state (J = φ₀ is the fully compacted
 // mixture, where the pores close and k → 0), κ ≥ 0 and M ≥ 0 dimensionless. k(1) = k₀.
-// Case-file keys: material.permeability_law = "holmes_mow", material.permeability (k₀),
-// material.solid_fraction (φ₀), material.permeability_kappa (κ), material.permeability_M (M).
+// Case-file keys (describe()): material.permeability_law = "holmes_mow", material.permeability
+// (k₀), material.solid_fraction (φ₀), material.permeability_kappa (κ), material.permeability_M
+// (M).
 #pragma once
 
 #include <cmath>
@@ -21,6 +22,20 @@ struct HolmesMowPermeability {
   double phi0 = 0.2;   ///< φ₀, referential solid volume fraction, 0 < φ₀ < 1
   double kappa = 0.0;  ///< κ, exponent of the porosity ratio
   double M = 0.0;      ///< M, exponential stiffening coefficient
+
+  static LawDescription describe() {
+    return {"holmes_mow",
+            "k0 ((J - phi0)/(1 - phi0))^kappa exp(M (J^2 - 1)/2), Holmes & Mow 1990",
+            {permeability_parameters::reference(),
+             permeability_parameters::solid_fraction(),
+             {"permeability_kappa", 0.0, ParameterBounds::at_least(0.0), "",
+              "Exponent kappa of the porosity ratio (J - phi0)/(1 - phi0)."},
+             permeability_parameters::exponential_coefficient()},
+            {}};
+  }
+  static HolmesMowPermeability from_parameters(const ParameterSource& p) {
+    return {p("permeability"), p("solid_fraction"), p("permeability_kappa"), p("permeability_M")};
+  }
 
   double permeability(double J) const {
     return k0 * std::pow(porosity_ratio(J), kappa) * std::exp(0.5 * M * (J * J - 1.0));

@@ -19,13 +19,14 @@
 //   𝒸_ijkl = γ τ_ij τ_kl + e^Q [λ (b_ij b_kl − ½(b_ik b_jl + b_il b_jk)) + H_A ½(δ_ik δ_jl + δ_il
 //   δ_jk)], γ = 4β/(H_A e^Q),
 // and ∂P_iJ/∂F_kL = F⁻¹_Jj (𝒸_ijkl + δ_ik τ_jl) F⁻¹_Ll.
-// Case-file keys: material.solid_law = "holmes_mow", material.youngs_modulus (E),
-// material.poissons_ratio (ν), material.beta (β) (src/io/case_schema.cpp). A SolidLaw.
+// Case-file keys (describe()): material.solid_law = "holmes_mow", material.youngs_modulus (E),
+// material.poissons_ratio (ν), material.beta (β). A SolidLaw.
 #pragma once
 
 #include <array>
 
 #include "biphasic/fe/shape_functions.hpp"
+#include "biphasic/material/law_parameters.hpp"
 #include "biphasic/material/solid_law.hpp"
 
 namespace biphasic {
@@ -34,6 +35,12 @@ struct HolmesMowSolid {
   double E = 1.0;     ///< Young's modulus [MPa], > 0
   double nu = 0.3;    ///< Poisson's ratio, in (−1, 0.5)
   double beta = 0.0;  ///< exponential stiffening coefficient β ≥ 0 (0: the limit form)
+
+  /// Name "holmes_mow", parameters youngs_modulus, poissons_ratio and beta.
+  static LawDescription describe();
+  static HolmesMowSolid from_parameters(const ParameterSource& p) {
+    return {p("youngs_modulus"), p("poissons_ratio"), p("beta")};
+  }
 
   double lambda() const { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }  ///< Lamé λ [MPa]
   double mu() const { return 0.5 * E / (1.0 + nu); }                          ///< μ [MPa]

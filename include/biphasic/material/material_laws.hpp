@@ -1,23 +1,28 @@
 // The registry of material laws: the one place where the case's material choices become law
-// objects. A law is registered by adding its type to the variant below (docs/model_layer.md);
-// the element kernel is instantiated for every pair of registered laws and the pair is chosen
-// once per element call, outside the quadrature loop.
+// objects. A law is registered by adding its type to one of the variants below (and its header
+// to the includes); its case-file keys, checks and documentation come from the law's own
+// describe() (law_parameters.hpp, docs/model_layer.md). The element kernel is instantiated for
+// every pair of registered laws and the pair is chosen once per element call, outside the
+// quadrature loop.
 #pragma once
 
+#include <string>
 #include <variant>
+#include <vector>
 
-#include "biphasic/io/config.hpp"
 #include "biphasic/material/constant_permeability.hpp"
 #include "biphasic/material/exponential_permeability.hpp"
 #include "biphasic/material/holmes_mow_permeability.hpp"
 #include "biphasic/material/holmes_mow_solid.hpp"
+#include "biphasic/material/law_parameters.hpp"
+#include "biphasic/material/material_config.hpp"
 #include "biphasic/material/neo_hookean.hpp"
 
 namespace biphasic {
 
-/// Every solid law of the skeleton the solver can run.
+/// Every solid law of the skeleton the solver can run; the first is the default.
 using AnySolidLaw = std::variant<NeoHookean, HolmesMowSolid>;
-/// Every permeability law the solver can run.
+/// Every permeability law the solver can run; the first is the default.
 using AnyPermeabilityLaw =
     std::variant<ConstantPermeability, HolmesMowPermeability, ExponentialPermeability>;
 
@@ -33,7 +38,23 @@ struct MaterialLaws {
   double reference_permeability() const;
 };
 
-/// The laws the case's [material] section selects.
+/// The laws a material section selects, built from its parameter values. Throws
+/// std::invalid_argument for a law name that is not registered.
 MaterialLaws make_material_laws(const MaterialConfig& material);
+
+/// One kind of law a material section chooses: the choice key and the registered laws.
+struct LawFamily {
+  std::string key;   ///< the choice key inside the section, "solid_law" or "permeability_law"
+  std::string what;  ///< what the choice is, e.g. "Solid law of the skeleton"
+  std::vector<LawDescription> laws;     ///< in registration order; the first is the default
+  std::string MaterialConfig::*chosen;  ///< where MaterialConfig holds the choice
+};
+
+/// The solid and the permeability family. Throws std::logic_error (at first use) if two laws
+/// declare the same parameter differently.
+const std::vector<LawFamily>& material_law_families();
+
+/// The declaration of a parameter of any registered law, or nullptr.
+const LawParameter* find_law_parameter(const std::string& name);
 
 }  // namespace biphasic

@@ -3,12 +3,14 @@
 //   P_eff = μ (F − F⁻ᵀ) + λ ln J F⁻ᵀ            (first Piola–Kirchhoff, MPa)
 //   A = ∂P_eff/∂F, A_iJkL = μ δ_ik δ_JL + λ F⁻ᵀ_iJ F⁻ᵀ_kL − (λ ln J − μ) F⁻ᵀ_iL F⁻ᵀ_kJ   [MPa]
 // Small-strain P-wave modulus H_A = λ + 2μ. A SolidLaw (solid_law.hpp).
-// Case-file keys: material.lambda, material.mu [MPa] (src/io/case_schema.cpp).
+// Case-file keys (describe()): material.solid_law = "neo_hookean", material.lambda,
+// material.mu [MPa]; λ + ⅔μ > 0 is checked.
 #pragma once
 
 #include <cmath>
 
 #include "biphasic/fe/shape_functions.hpp"
+#include "biphasic/material/law_parameters.hpp"
 #include "biphasic/material/solid_law.hpp"
 
 namespace biphasic {
@@ -16,6 +18,10 @@ namespace biphasic {
 struct NeoHookean {
   double lambda = 0.2;  ///< Lamé λ [MPa]
   double mu = 0.5;      ///< shear modulus μ [MPa]
+
+  /// Name "neo_hookean", parameters lambda and mu, the check λ + ⅔μ > 0.
+  static LawDescription describe();
+  static NeoHookean from_parameters(const ParameterSource& p) { return {p("lambda"), p("mu")}; }
 
   /// H_A = λ + 2μ [MPa], the oedometric modulus at small strain.
   double p_wave_modulus() const { return lambda + 2.0 * mu; }
