@@ -258,6 +258,16 @@ TEST(StrainDependentPermeability, ExponentialValuesAndDerivative) {
   EXPECT_THROW(kExponential.permeability(0.2), std::domain_error);
 }
 
+// Lai & Mow: k0 exp(M (J - 1)), positive at every J > 0 (no pore closure).
+TEST(StrainDependentPermeability, LaiMowValuesAndDerivative) {
+  const LaiMowPermeability law{2e-3, 3.0};
+  EXPECT_DOUBLE_EQ(law.permeability(1.0), 2e-3);
+  EXPECT_NEAR(law.permeability(0.6), 2e-3 * std::exp(-1.2), 1e-18);
+  EXPECT_NEAR(law.permeability(1.5), 2e-3 * std::exp(1.5), 1e-17);
+  for (double J : {0.25, 0.5, 0.9, 1.0, 1.1, 1.5}) EXPECT_LT(derivative_error(law, J), 1e-7);
+  EXPECT_GT(law.permeability(0.05), 0.0);
+}
+
 // The element Jacobian with each strain-dependent law, block by block against central
 // differences (the state's J lies in about [0.8, 1.2], far from phi0 = 0.2).
 TEST(StrainDependentPermeability, ElementJacobianMatchesCentralDifferences) {

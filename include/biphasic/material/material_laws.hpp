@@ -14,6 +14,7 @@
 #include "biphasic/material/exponential_permeability.hpp"
 #include "biphasic/material/holmes_mow_permeability.hpp"
 #include "biphasic/material/holmes_mow_solid.hpp"
+#include "biphasic/material/lai_mow_permeability.hpp"
 #include "biphasic/material/law_parameters.hpp"
 #include "biphasic/material/material_config.hpp"
 #include "biphasic/material/neo_hookean.hpp"
@@ -23,8 +24,8 @@ namespace biphasic {
 /// Every solid law of the skeleton the solver can run; the first is the default.
 using AnySolidLaw = std::variant<NeoHookean, HolmesMowSolid>;
 /// Every permeability law the solver can run; the first is the default.
-using AnyPermeabilityLaw =
-    std::variant<ConstantPermeability, HolmesMowPermeability, ExponentialPermeability>;
+using AnyPermeabilityLaw = std::variant<ConstantPermeability, HolmesMowPermeability,
+                                        ExponentialPermeability, LaiMowPermeability>;
 
 /// The laws of one material.
 struct MaterialLaws {
