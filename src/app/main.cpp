@@ -12,6 +12,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/io/size_guard.hpp"
+#include "biphasic/time/progress_meter.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace {
@@ -100,6 +101,7 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   options.output_dir =
       out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
   options.overrides = overrides;
+  options.progress_interval = biphasic::progress_interval_from_environment();
   biphasic::run_case(config, options);
   return 0;
 }
