@@ -359,6 +359,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       if (!step_log) flush_checked(step_log, log_path);  // throws, naming the file and cause
     }
     // Outputs passed by this step, by IDA's interpolation.
+    const int first_output = next_output;
     while (next_output <= outputs && output_time(next_output) <= tret + 1e-12 * t_end) {
       const double to = std::min(output_time(next_output), tret);
       IDAGetDky(m.ida, to, 0, m.tmp);
@@ -389,7 +390,9 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       progress.restart();  // the output line shows the progress
       ++next_output;
     }
-    if (next_output <= outputs && progress.due()) note(progress.line(progress_sample(tret, h, q)));
+    // A step that wrote an output line needs no progress line.
+    if (next_output == first_output && progress.due())
+      note(progress.line(progress_sample(tret, h, q)));
     if (flag == IDA_TSTOP_RETURN) {
       const bool kink =
           stop + 1 < stops.size() && std::abs(tret - stops[stop]) <= 1e-12 * std::max(1.0, t_end);

@@ -25,8 +25,10 @@ std::string ProgressMeter::line(const ProgressSample& s) {
   const double done = span > 0.0 ? std::clamp((s.t - t0_) / span, 0.0, 1.0) : 1.0;
   // Wall time per simulated second so far, times the simulated time left: unknown until
   // some simulated time has passed.
-  const std::string left =
-      done > 0.0 ? "~" + format_wall_time(elapsed * (1.0 - done) / done) : std::string("unknown");
+  const double estimate = done > 0.0 ? elapsed * (1.0 - done) / done : -1.0;
+  const std::string left = estimate < 0.0   ? std::string("unknown")
+                           : estimate < 1.0 ? format_wall_time(estimate)
+                                            : "~" + format_wall_time(estimate);
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "progress  t %9.4g s (%5.1f %%)  h %8.3g s  order %d  steps %ld  "
