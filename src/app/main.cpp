@@ -1,10 +1,12 @@
-// Command-line front end: biphasic run|check CASE [-o DIR] [--set key=value ...].
+// Command-line front end: biphasic run|check CASE [-o DIR] [--set key=value ...], biphasic
+// schema, biphasic help [COMMAND], and COMMAND --help (command_help.hpp).
 #include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "biphasic/app/command_help.hpp"
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/app/run.hpp"
@@ -12,38 +14,17 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/io/size_guard.hpp"
+#include "biphasic/time/progress_meter.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace {
 
-constexpr const char* kUsage = R"(usage:
-  biphasic run CASE.toml [-o DIR] [--overwrite] [--set KEY=VALUE ...] [--quiet]
-  biphasic run CASE.toml --restart DIR [--set KEY=VALUE ...] [--quiet]
-  biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) on its mesh
-  biphasic schema            print the case-file reference (Markdown)
-  biphasic --help | --version
-
-run: solves the finite-strain biphasic problem described by CASE.toml and writes, as the run
-goes, into DIR (default: results/<case name>, or results/<case name>--<key=value,...> with
---set overrides, characters other than letters, digits and . _ , = + - replaced by _):
-  line.csv       t, s, x, y, z, ux, uy, uz, p on the probe line at every output time
-  probe_NAME.csv the same on each [[probe]] line
-  fields.h5      displacement (P2 nodes) and pressure per output time; open fields.xdmf in ParaView
-  reactions.csv  t, boundary, Fx, Fy, Fz of the boundaries in output.reactions
-  summary.json   resolved configuration, overrides, mesh size, per-step records, counters,
-                 timings, and the final status: completed, failed (with the error) or invalid
-DIR is locked while the run writes (a second run into it stops with the first one's pid). A DIR
-holding an earlier run (a summary.json) is refused unless --overwrite, which deletes that run's
-files first.
---restart DIR continues the run in DIR from its last checkpoint (checkpoint.bin, written at
-every output) up to the case's time.t_end, which may be later than the first run's; give the
-same case file and overrides. Backward Euler continues as if never stopped; BDF restarts IDA
-from the checkpoint's state (docs/output_and_restart.md).
---set overrides any case-file key, e.g. --set material.permeability=1e-2
-  --set stabilisation.type=gls --set boundary[0].value=-0.16
-Exit status: 0 success, 1 bad input (all problems listed) or unusable output folder,
-2 failed solve or failed write.
-)";
+/// Whether the arguments after the command ask for its help.
+bool asks_for_help(const std::vector<std::string>& args) {
+  for (std::size_t i = 1; i < args.size(); ++i)
+    if (args[i] == "--help" || args[i] == "-h") return true;
+  return false;
+}
 
 /// `run`, or `check` (validate == true): reads and validates the case, then runs it or stops.
 int run_command(const std::vector<std::string>& args, bool validate_only) {
@@ -100,6 +81,7 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   options.output_dir =
       out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
   options.overrides = overrides;
+  options.progress_interval = biphasic::progress_interval_from_environment();
   biphasic::run_case(config, options);
   return 0;
 }
@@ -108,9 +90,26 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::cout << kUsage;
+  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    std::cout << biphasic::program_usage();
     return args.empty() ? 1 : 0;
+  }
+  if (args[0] == "help") {
+    if (args.size() < 2 || args[1] == "--help" || args[1] == "-h") {
+      std::cout << (args.size() < 2 ? biphasic::program_usage() : *biphasic::command_help("help"));
+      return 0;
+    }
+    if (const auto help = biphasic::command_help(args[1])) {
+      std::cout << *help;
+      return 0;
+    }
+    std::cerr << "error: unknown command '" << args[1] << "' (try --help)\n";
+    return 1;
+  }
+  // COMMAND --help anywhere among the command's arguments: that command's help, nothing run.
+  if (const auto help = biphasic::command_help(args[0]); help && asks_for_help(args)) {
+    std::cout << *help;
+    return 0;
   }
   if (args[0] == "--version") {
     std::cout << "biphasic " << BIPHASIC_VERSION << "\n" << biphasic::dependency_versions() << "\n";
@@ -118,6 +117,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (args[0] == "schema") {
+      if (args.size() > 1)
+        throw std::invalid_argument("schema takes no arguments ('" + args[1] + "' given)");
       std::cout << biphasic::case_schema_markdown();
       return 0;
     }
@@ -135,7 +136,7 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n" << kUsage;
+    std::cerr << "error: " << e.what() << "\n" << biphasic::program_usage();
     return 1;
   } catch (const biphasic::StepFailure& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -192,6 +192,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
       make_time_integrator(problem, config, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
   integrator.set_log(say);
+  integrator.set_progress_interval(options.progress_interval);
   const double setup_seconds = seconds_since(t0);
   const fs::path checkpoint_path = out_dir / kCheckpointName;
   const std::uint64_t case_hash = case_fingerprint(config, mesh);

@@ -13,6 +13,7 @@
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/progress_meter.hpp"
 #include "biphasic/time/solver_messages.hpp"
 
 namespace biphasic {
@@ -196,8 +197,11 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     if (flag < 0) throw std::runtime_error(std::string("IDA set-up failed in ") + what);
   };
   // Counters of the current IDA segment, added to the totals at each restart and at the end.
+  long setups = 0;  // Jacobian setups of the segments before the current one (progress lines)
   auto accumulate = [&] {
     long v = 0;
+    IDAGetNumLinSolvSetups(m.ida, &v);
+    setups += v;
     IDAGetNumSteps(m.ida, &v);
     stats_.steps += v;
     IDAGetNumNonlinSolvIters(m.ida, &v);
@@ -220,6 +224,8 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       }
     return default_first_step(horizon, horizon);
   };
+  // This run's counts start here (stats_ may carry an earlier run's).
+  const long steps_before = stats_.steps, error_test_failures_before = stats_.error_test_failures;
   const double allowed_imbalance = atol_displacement_ * problem.stiffness_scale();
   double last_step = 0.0;
   // IDA from a consistent (y, ẏ) at t: created on the first call, re-initialised after a kink.
@@ -298,6 +304,23 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
         << " s failed: " << cause;
     return StepFailure(msg.str());
   };
+  // Progress lines between outputs. They are written between two IDA_ONE_STEP calls of the
+  // loop below and read only IDA's counters (IDAGet*) and the wall clock; no solver input
+  // changes (no stop time, step limit or extra IDASolve call in IDA_NORMAL mode towards a
+  // progress time, which would shorten the step that crosses it), so the results are
+  // bit-identical with or without them, whatever the interval.
+  ProgressMeter progress(t0, t_end, progress_interval());
+  auto progress_sample = [&](double t, double h, int q) {
+    ProgressSample s{t, h, q, 0, 0, 0};
+    long v = 0;
+    IDAGetNumSteps(m.ida, &v);
+    s.steps = stats_.steps - steps_before + v;
+    IDAGetNumLinSolvSetups(m.ida, &v);
+    s.setups = setups + v;
+    IDAGetNumErrTestFails(m.ida, &v);
+    s.error_test_failures = stats_.error_test_failures - error_test_failures_before + v;
+    return s;
+  };
   double t_reached = t0;
   while (next_output <= outputs) {
     if (steps_since_output >= bdf.max_steps) {
@@ -336,6 +359,7 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       if (!step_log) flush_checked(step_log, log_path);  // throws, naming the file and cause
     }
     // Outputs passed by this step, by IDA's interpolation.
+    const int first_output = next_output;
     while (next_output <= outputs && output_time(next_output) <= tret + 1e-12 * t_end) {
       const double to = std::min(output_time(next_output), tret);
       IDAGetDky(m.ida, to, 0, m.tmp);
@@ -363,8 +387,12 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
       std::tie(info.residual_u, info.residual_p) = problem.field_norms(F.data());
       if (step_log.is_open()) flush_checked(step_log, log_path);  // on disk with the checkpoint
       if (observer) observer(info, y_out, ydot_out);
+      progress.restart();  // the output line shows the progress
       ++next_output;
     }
+    // A step that wrote an output line needs no progress line.
+    if (next_output == first_output && progress.due())
+      note(progress.line(progress_sample(tret, h, q)));
     if (flag == IDA_TSTOP_RETURN) {
       const bool kink =
           stop + 1 < stops.size() && std::abs(tret - stops[stop]) <= 1e-12 * std::max(1.0, t_end);

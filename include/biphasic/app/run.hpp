@@ -7,12 +7,16 @@
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/time/progress_meter.hpp"
 
 namespace biphasic {
 
 struct RunOptions {
   std::string output_dir = "results";
-  bool quiet = false;      ///< no per-step lines on the terminal
+  bool quiet = false;  ///< no per-step lines, progress lines or notes on the terminal
+  /// Wall time between BDF progress lines while IDA steps between outputs [s]; 0: after every
+  /// internal step (main reads it from BIPHASIC_PROGRESS_INTERVAL).
+  double progress_interval = kDefaultProgressInterval;
   bool overwrite = false;  ///< replace an earlier run in output_dir (--overwrite)
   bool restart = false;    ///< continue the run in output_dir from its checkpoint (--restart)
   std::vector<std::string> overrides;  ///< the --set key=value texts, recorded in summary.json

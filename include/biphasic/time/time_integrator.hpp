@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "biphasic/time/progress_meter.hpp"
+
 namespace biphasic {
 
 /// One output time (backward Euler: one interval of time.dt, in one step or several sub-steps
@@ -125,14 +127,19 @@ class TimeIntegrator {
   /// Where the integrator's notes during a run go (one line each; e.g. cut-backs). None by
   /// default.
   void set_log(std::function<void(const std::string&)> log) { log_ = std::move(log); }
+  /// Wall time between the progress lines an adaptive integrator (BDF) writes to the log while
+  /// it steps between outputs [s]; 0: after every internal step. Backward Euler writes none.
+  void set_progress_interval(double seconds) { progress_interval_ = seconds; }
 
  protected:
   void note(const std::string& line) const {
     if (log_) log_(line);
   }
+  double progress_interval() const { return progress_interval_; }
 
  private:
   std::function<void(const std::string&)> log_;
+  double progress_interval_ = kDefaultProgressInterval;  ///< [s]
 };
 
 }  // namespace biphasic
