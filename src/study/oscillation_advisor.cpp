@@ -1,4 +1,5 @@
 #include "biphasic/study/oscillation_advisor.hpp"
+#include "biphasic/physics/stabilisation/stabilisations.hpp"
 
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/time/time_integrator.hpp"
@@ -34,18 +35,6 @@ std::string fmt(const char* format, double value) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, value);
   return buf;
-}
-
-std::string to_name(Stabilisation s) {
-  switch (s) {
-    case Stabilisation::Gls:
-      return "gls";
-    case Stabilisation::FluxPerturbation:
-      return "flux_perturbation";
-    case Stabilisation::None:
-      break;
-  }
-  return "none";
 }
 
 /// First time after 0 where a boundary condition's load curve has a kink, else t_end: IDA's
@@ -104,7 +93,7 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
   const double c = laws.reference_permeability() * laws.p_wave_modulus();
   advice.consolidation_coefficient = c;
   advice.bdf = uses_ida(config.time.integrator);
-  advice.stabilisation = to_name(config.stabilisation.type);
+  advice.stabilisation = config.stabilisation.type;
   if (!advice.bdf) {
     advice.first_step = std::min(config.time.dt, config.time.t_end);
     advice.first_step_source = "time.dt";
@@ -118,7 +107,8 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
         "load-curve kink";
   }
   const double dt = advice.first_step;
-  const bool stabilised = config.stabilisation.type != Stabilisation::None;
+  const bool stabilised =
+      !std::holds_alternative<NoStabilisation>(make_stabilisation(config.stabilisation.type));
 
   std::set<std::string> seen;
   for (const auto& bc : config.bcs) {

@@ -89,7 +89,7 @@ ColumnRun run_column(VolumeRate form, double dt, double flux, double source) {
   const Mesh mesh = test::box_mesh({2, 2, 3}, {1.0, 1.0, 1.5});
   Config config;
   config.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
-  config.stabilisation.type = Stabilisation::Gls;
+  config.stabilisation.type = "gls";
   config.time.t_end = 4.0;
   config.time.dt = dt;
   config.time.volume_rate = form;

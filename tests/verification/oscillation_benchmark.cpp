@@ -68,8 +68,8 @@ OscillationSweep sweep_first_step(int nz) {
   OscillationSweep sweep;
   sweep.r = kSweep;
   for (const auto& [name, type] :
-       {std::pair{"none", Stabilisation::None}, std::pair{"gls", Stabilisation::Gls},
-        std::pair{"flux_perturbation", Stabilisation::FluxPerturbation}}) {
+       {std::pair{"none", "none"}, std::pair{"gls", "gls"},
+        std::pair{"flux_perturbation", "flux_perturbation"}}) {
     Config config = base;
     config.stabilisation.type = type;
     auto& values = sweep.overshoot[name];

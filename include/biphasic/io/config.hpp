@@ -9,6 +9,7 @@
 
 #include "biphasic/io/expression.hpp"
 #include "biphasic/material/material_config.hpp"
+#include "biphasic/physics/stabilisation/stabilisation_config.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 
 namespace biphasic {
@@ -67,19 +68,6 @@ struct BoundaryCondition {
   double value = 0.0;              ///< scale of the curve (units by type)
   std::array<double, 3> vector{};  ///< traction vector [MPa] (traction only)
   std::string curve;               ///< load-curve name; empty = constant 1
-};
-
-/// Gls: the paper's semidiscrete GLS term, c_e = scale · h²/(4k).
-/// FluxPerturbation: Aguilar et al. 2008 (FEBio's tau), w = −k∇(p + τṗ), β = kτ = scale · h²/(4
-/// H_A).
-enum class Stabilisation { None, Gls, FluxPerturbation };
-/// Element length h in c_e = h²/(4k): the paper uses the circumsphere radius.
-enum class ElementLength { Circumradius, ShortestEdge, LongestEdge, VolumeDiameter };
-
-struct StabilisationConfig {
-  Stabilisation type = Stabilisation::None;
-  ElementLength length = ElementLength::Circumradius;
-  double scale = 1.0;  ///< multiplies c_e or β (1 = the published coefficients)
 };
 
 /// BackwardEuler: fixed step (the paper's). Bdf: IDA, orders 1–time.bdf.max_order.
