@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "../case/case_test_support.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/physics/stabilisation/stabilisations.hpp"
 
@@ -50,13 +51,7 @@ TEST(Stabilisations, TheDefaultIsNone) {
 }
 
 TEST(Stabilisations, TheCaseFileAcceptsExactlyTheRegisteredNames) {
-  const std::string base = R"(format_version = 1
-[[boundary]]
-name = "top"
-type = "displacement"
-component = "z"
-value = -0.08
-)";
+  const std::string& base = testing_support::kMinimalCase;
   for (const StabilisationDescription& d : stabilisation_descriptions()) {
     const Config c =
         parse_case(base + "[stabilisation]\ntype = \"" + d.name + "\"\n", "cases/x.toml", {}, ".");
