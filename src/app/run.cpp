@@ -189,7 +189,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   t0 = Clock::now();
   BiphasicProblem problem(mesh, config);
   const std::unique_ptr<TimeIntegrator> integrator_ptr =
-      make_time_integrator(problem, config, out_dir.string());
+      make_time_integrator(problem, config.time, config.linear_solver, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
   integrator.set_log(say);
   integrator.set_progress_interval(options.progress_interval);

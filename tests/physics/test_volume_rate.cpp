@@ -116,7 +116,7 @@ ColumnRun run_column(VolumeRate form, double dt, double flux, double source) {
   if (flux != 0.0) bc(BcType::Flux, "z0", 0, flux, "");
   BiphasicProblem problem(mesh, config);
   if (source != 0.0) problem.set_fluid_source([source](const Vec3&, double) { return source; });
-  const auto integrator = make_time_integrator(problem, config, "");
+  const auto integrator = make_time_integrator(problem, config.time, config.linear_solver, "");
   std::vector<double> y(problem.size(), 0.0);
   problem.apply_dirichlet(0.0, y.data(), nullptr);
   VolumeBalance balance(problem, y);
@@ -165,7 +165,8 @@ TEST(VolumeBalance, BdfRefusesTheConservativeForm) {
   config.time.integrator = Integrator::Bdf;
   config.time.volume_rate = VolumeRate::Conservative;
   BiphasicProblem problem(mesh, config);
-  EXPECT_THROW(make_time_integrator(problem, config, ""), std::invalid_argument);
+  EXPECT_THROW(make_time_integrator(problem, config.time, config.linear_solver, ""),
+               std::invalid_argument);
   EXPECT_THROW(problem.set_conservative_volume_rate(-1.0), std::invalid_argument);
 }
 

@@ -47,7 +47,8 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
 std::vector<double> run(Config cfg, Integrator integrator, const std::string& log = {}) {
   cfg.time.integrator = integrator;
   BiphasicProblem problem(coarse_mesh(), cfg);
-  std::unique_ptr<TimeIntegrator> ti = make_time_integrator(problem, cfg, log);
+  std::unique_ptr<TimeIntegrator> ti =
+      make_time_integrator(problem, cfg.time, cfg.linear_solver, log);
   std::vector<double> y(problem.size(), 0.0);
   ti->run(0.0, y, nullptr);
   return pressures(problem, y);
@@ -246,7 +247,8 @@ TEST(AdaptiveBackwardEuler, TakesOnlyFirstOrderSteps) {
   cfg.time.integrator = Integrator::AdaptiveBackwardEuler;
   cfg.time.bdf.rtol = 1e-5;
   BiphasicProblem problem(column_mesh(), cfg);
-  std::unique_ptr<TimeIntegrator> ti = make_time_integrator(problem, cfg, "");
+  std::unique_ptr<TimeIntegrator> ti =
+      make_time_integrator(problem, cfg.time, cfg.linear_solver, "");
   std::vector<double> y(problem.size(), 0.0);
   ti->run(0.0, y, nullptr);
   const auto& orders = ti->stats().order_counts;
