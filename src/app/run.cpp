@@ -189,7 +189,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   t0 = Clock::now();
   BiphasicProblem problem(mesh, config);
   const std::unique_ptr<TimeIntegrator> integrator_ptr =
-      make_time_integrator(problem, config, out_dir.string());
+      make_time_integrator(problem, config.time, config.linear_solver, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
   integrator.set_log(say);
   integrator.set_progress_interval(options.progress_interval);
@@ -222,8 +222,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
       << (mesh_from_cache ? ", from the mesh cache" : "") << ")";
     say(s.str());
   }
-  if (config.linear_solver.type == LinearSolverType::Iterative &&
-      config.stabilisation.type == Stabilisation::Gls) {
+  if (config.linear_solver.type == LinearSolverType::Iterative && problem.has_gls()) {
     // The GLS term adds c_j c_e ∫ div f div δu to the displacement block: a grad–div penalty
     // that algebraic multigrid handles poorly once it outweighs the solid's λ + 2μ.
     // Largest c_e / H_A over the elements, each with its own material's H_A.

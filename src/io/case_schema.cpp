@@ -12,6 +12,7 @@
 
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/material/material_laws.hpp"
+#include "biphasic/physics/stabilisation/stabilisations.hpp"
 
 namespace biphasic::case_schema {
 
@@ -38,13 +39,6 @@ const Names<BcType>& bc_names() {
 
 const Names<int>& component_names() {
   static const Names<int> names{{"x", 0}, {"y", 1}, {"z", 2}};
-  return names;
-}
-
-const Names<Stabilisation>& stabilisation_names() {
-  static const Names<Stabilisation> names{{"none", Stabilisation::None},
-                                          {"gls", Stabilisation::Gls},
-                                          {"flux_perturbation", Stabilisation::FluxPerturbation}};
   return names;
 }
 
@@ -495,10 +489,20 @@ std::vector<Key<Config>> build_global_keys() {
       "mass balance reads dJ/dt + Div W = s (W the reference seepage), so s > 0 injects fluid.",
       [](auto& c) -> auto& { return c.loads.fluid_source; }));
 
-  keys.push_back(choice_key<C>(
-      "stabilisation.type", stabilisation_names(),
-      "Pressure stabilisation: none, or Galerkin least squares (gls).",
-      [](auto& c) -> auto& { return c.stabilisation.type; }));
+  {
+    // The choices and their summaries come from the registered stabilisations.
+    std::vector<std::string> names, described;
+    for (const StabilisationDescription& d : stabilisation_descriptions()) {
+      names.push_back(d.name);
+      described.push_back(d.name + " (" + d.summary + ")");
+    }
+    auto type = make_key<C>("stabilisation.type", Kind::Choice, "",
+                            "Pressure stabilisation: " + joined(described, "; ") + ".");
+    type.choices = names;
+    type.store = [](C& c, const Value& v) { c.stabilisation.type = std::get<std::string>(v); };
+    type.fetch = [](const C& c) -> Value { return c.stabilisation.type; };
+    keys.push_back(type);
+  }
   keys.push_back(choice_key<C>(
       "stabilisation.length", element_length_names(),
       "Element length h in the GLS parameter c_e = h^2 / (4 k).",

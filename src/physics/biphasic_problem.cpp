@@ -18,6 +18,7 @@
 #include "biphasic/assembly/threads.hpp"
 #include "biphasic/fe/tet_geometry.hpp"
 #include "biphasic/physics/boundary_integrals.hpp"
+#include "biphasic/physics/stabilisation/stabilisations.hpp"
 
 namespace biphasic {
 
@@ -147,10 +148,10 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
   for (const QuadraturePoint& qp : rule.points) point_p2_.push_back(p2_values(qp.xi));
   geometry_.resize(mesh.tets.size());
-  const bool gls = config.stabilisation.type == Stabilisation::Gls;
-  const bool flux = config.stabilisation.type == Stabilisation::FluxPerturbation;
-  if (gls) gls_c_.resize(mesh.tets.size());
-  if (flux) flux_beta_.resize(mesh.tets.size());
+  const AnyStabilisation stabilisation = make_stabilisation(config.stabilisation.type);
+  const bool sized = describe(stabilisation).sized_by_element;
+  gls_c_.assign(mesh.tets.size(), 0.0);
+  flux_beta_.assign(mesh.tets.size(), 0.0);
   // Material regions: each mesh region with a [[region]] entry gets its own laws; the others
   // use [material] (laws_[0]).
   std::vector<int> region_law(mesh.region_names.size(), 0);
@@ -196,15 +197,21 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     }
     const TetCorners x = corners(mesh, mesh.tets[e]);
     mean_length += tet_volume_diameter(x);
-    if (gls || flux) {
+    if (sized) {
       const double h = element_length(x, config.stabilisation.length);
-      const double h2 = config.stabilisation.scale * h * h;
-      // Each element's own material: c_e from its k(1), β from its H_A.
-      const MaterialLaws& laws = laws_of(static_cast<Index>(e));
-      if (gls) gls_c_[e] = h2 / (4.0 * laws.reference_permeability());
-      if (flux) flux_beta_[e] = h2 / (4.0 * laws.p_wave_modulus());
+      // Each element's own material (c_e from its k(1), β from its H_A).
+      const ElementCoefficients c = element_coefficients(
+          stabilisation, config.stabilisation.scale * h * h, laws_of(static_cast<Index>(e)));
+      gls_c_[e] = c.gls_c;
+      flux_beta_[e] = c.flux_beta;
     }
   }
+  // A term no element has is absent (has_gls(), has_flux_perturbation()).
+  auto absent = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+  };
+  if (absent(gls_c_)) gls_c_.clear();
+  if (absent(flux_beta_)) flux_beta_.clear();
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
   row_scale_u_ = HA * mean_length;
   row_scale_p_ = k_ref * mean_length;

@@ -1,12 +1,14 @@
 #include "biphasic/study/oscillation_advisor.hpp"
 
 #include "biphasic/material/material_laws.hpp"
+#include "biphasic/physics/stabilisation/stabilisations.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -36,18 +38,6 @@ std::string fmt(const char* format, double value) {
   return buf;
 }
 
-std::string to_name(Stabilisation s) {
-  switch (s) {
-    case Stabilisation::Gls:
-      return "gls";
-    case Stabilisation::FluxPerturbation:
-      return "flux_perturbation";
-    case Stabilisation::None:
-      break;
-  }
-  return "none";
-}
-
 /// First time after 0 where a boundary condition's load curve has a kink, else t_end: IDA's
 /// first stop time (src/time/bdf_integrator.cpp).
 double first_stop(const Config& config) {
@@ -66,14 +56,22 @@ double first_stop(const Config& config) {
 }  // namespace
 
 std::vector<double> heights_over_boundary(const Mesh& mesh, const std::string& boundary) {
+  std::vector<double> heights;
+  for (const auto& [tet, h] : tetrahedra_over_boundary(mesh, boundary)) heights.push_back(h);
+  return heights;
+}
+
+std::vector<std::pair<Index, double>> tetrahedra_over_boundary(const Mesh& mesh,
+                                                               const std::string& boundary) {
   const Boundary* b = mesh.find_boundary(boundary);
   if (!b) throw std::runtime_error("oscillation advisor: no boundary named '" + boundary + "'");
   std::map<FaceKey, std::size_t> faces;  // corner triple → index in b->faces
   for (std::size_t f = 0; f < b->faces.size(); ++f)
     faces.emplace(sorted_key(b->faces[f][0], b->faces[f][1], b->faces[f][2]), f);
   std::vector<char> found(b->faces.size(), 0);
-  std::vector<double> heights;
-  for (const Tet10& t : mesh.tets) {
+  std::vector<std::pair<Index, double>> heights;
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    const Tet10& t = mesh.tets[e];
     double h = -1.0;
     for (int opposite = 0; opposite < 4; ++opposite) {
       std::array<Index, 3> c{};
@@ -89,7 +87,7 @@ std::vector<double> heights_over_boundary(const Mesh& mesh, const std::string& b
       const double height = 3.0 * volume / area;
       h = h < 0.0 ? height : std::min(h, height);
     }
-    if (h >= 0.0) heights.push_back(h);
+    if (h >= 0.0) heights.emplace_back(static_cast<Index>(e), h);
   }
   for (std::size_t f = 0; f < found.size(); ++f)
     if (!found[f])
@@ -104,7 +102,7 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
   const double c = laws.reference_permeability() * laws.p_wave_modulus();
   advice.consolidation_coefficient = c;
   advice.bdf = uses_ida(config.time.integrator);
-  advice.stabilisation = to_name(config.stabilisation.type);
+  advice.stabilisation = config.stabilisation.type;
   if (!advice.bdf) {
     advice.first_step = std::min(config.time.dt, config.time.t_end);
     advice.first_step_source = "time.dt";
@@ -118,22 +116,39 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
         "load-curve kink";
   }
   const double dt = advice.first_step;
-  const bool stabilised = config.stabilisation.type != Stabilisation::None;
+  const bool stabilised =
+      !std::holds_alternative<NoStabilisation>(make_stabilisation(config.stabilisation.type));
+
+  // c per mesh region: its [[region]] entry's material, else [material].
+  std::vector<double> region_c(std::max<std::size_t>(1, mesh.region_names.size()), c);
+  for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
+    for (const RegionConfig& entry : config.regions)
+      if (entry.name == mesh.region_names[r]) {
+        const MaterialLaws own = make_material_laws(entry.material);
+        region_c[r] = own.reference_permeability() * own.p_wave_modulus();
+      }
 
   std::set<std::string> seen;
   for (const auto& bc : config.bcs) {
     if (bc.type != BcType::Pressure || !seen.insert(bc.boundary).second) continue;
-    std::vector<double> h = heights_over_boundary(mesh, bc.boundary);
-    if (h.empty()) continue;
+    const auto over = tetrahedra_over_boundary(mesh, bc.boundary);
+    if (over.empty()) continue;
+    std::vector<double> h;
+    double c_face = std::numeric_limits<double>::infinity();
+    for (const auto& [tet, height] : over) {
+      h.push_back(height);
+      c_face = std::min(c_face, region_c[static_cast<std::size_t>(mesh.region_of(tet))]);
+    }
     std::sort(h.begin(), h.end());
     DrainedFaceAdvice face;
     face.face = bc.boundary;
+    face.consolidation_coefficient = c_face;
     face.elements = static_cast<long>(h.size());
     face.h_min = h.front();
     face.h_median = h[h.size() / 2];
     face.h_max = h.back();
-    face.r_min = c * dt / (face.h_max * face.h_max);
-    face.r_median = c * dt / (face.h_median * face.h_median);
+    face.r_min = c_face * dt / (face.h_max * face.h_max);
+    face.r_median = c_face * dt / (face.h_median * face.h_median);
     face.in_regime = face.r_min < face.threshold;
     if (face.in_regime) {
       if (stabilised) {
@@ -148,10 +163,11 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
               "time.dt");
         } else {
           face.advice.push_back(
-              "time.dt >= " + fmt("%.3g", face.threshold * face.h_max * face.h_max / c) + " s");
-          face.advice.push_back(
-              "a first-layer thickness h <= " + fmt("%.3g", std::sqrt(c * dt / face.threshold)) +
-              " mm at '" + face.face + "' (grade the mesh toward it)");
+              "time.dt >= " + fmt("%.3g", face.threshold * face.h_max * face.h_max / c_face) +
+              " s");
+          face.advice.push_back("a first-layer thickness h <= " +
+                                fmt("%.3g", std::sqrt(c_face * dt / face.threshold)) + " mm at '" +
+                                face.face + "' (grade the mesh toward it)");
         }
       }
     }
@@ -163,10 +179,16 @@ OscillationAdvice advise_oscillation(const Mesh& mesh, const Config& config) {
 nlohmann::json to_json(const OscillationAdvice& advice) {
   nlohmann::json faces = nlohmann::json::object();
   for (const auto& f : advice.faces)
-    faces[f.face] = {
-        {"elements", f.elements},   {"h_min", f.h_min},         {"h_median", f.h_median},
-        {"h_max", f.h_max},         {"r_min", f.r_min},         {"r_median", f.r_median},
-        {"threshold", f.threshold}, {"in_regime", f.in_regime}, {"advice", f.advice}};
+    faces[f.face] = {{"consolidation_coefficient", f.consolidation_coefficient},
+                     {"elements", f.elements},
+                     {"h_min", f.h_min},
+                     {"h_median", f.h_median},
+                     {"h_max", f.h_max},
+                     {"r_min", f.r_min},
+                     {"r_median", f.r_median},
+                     {"threshold", f.threshold},
+                     {"in_regime", f.in_regime},
+                     {"advice", f.advice}};
   return {{"consolidation_coefficient", advice.consolidation_coefficient},
           {"first_step", advice.first_step},
           {"first_step_source", advice.first_step_source},

@@ -411,15 +411,16 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
 }
 
 std::unique_ptr<TimeIntegrator> make_time_integrator(SemidiscreteSystem& problem,
-                                                     const Config& config,
+                                                     const TimeConfig& time,
+                                                     const LinearSolverConfig& linear_solver,
                                                      const std::string& output_dir) {
-  switch (config.time.integrator) {
+  switch (time.integrator) {
     case Integrator::BackwardEuler:
-      return std::make_unique<BackwardEuler>(problem, config.time, config.linear_solver);
+      return std::make_unique<BackwardEuler>(problem, time, linear_solver);
     case Integrator::Bdf:
     case Integrator::AdaptiveBackwardEuler:
       return std::make_unique<BdfIntegrator>(
-          problem, config.time, config.linear_solver,
+          problem, time, linear_solver,
           output_dir.empty() ? std::string() : output_dir + "/steps.csv");
   }
   return nullptr;

@@ -28,7 +28,7 @@ TEST(CaseOverrides, NumberArrayAndStrings) {
   EXPECT_DOUBLE_EQ(c.time.dt, 3.2);
   EXPECT_DOUBLE_EQ(c.time.t_end, 40.0);
   EXPECT_EQ(c.output.line_end, (std::array<double, 3>{0.0, 0.0, 4.0}));
-  EXPECT_EQ(c.stabilisation.type, Stabilisation::Gls);
+  EXPECT_EQ(c.stabilisation.type, "gls");
   EXPECT_EQ(c.stabilisation.length, ElementLength::ShortestEdge);
   EXPECT_EQ(c.title, "a title with spaces");
 }

@@ -20,7 +20,7 @@ namespace biphasic::test {
 
 inline Mesh solver_box_mesh() { return box_mesh({3, 2, 2}, {1.5, 1.0, 1.0}); }
 
-inline Config solver_box_config(Stabilisation stabilisation) {
+inline Config solver_box_config(std::string stabilisation) {
   Config cfg;
   cfg.stabilisation.type = stabilisation;
   cfg.bcs = {{BcType::Displacement, "z0", 2, 0.0, {}, ""},
@@ -43,7 +43,7 @@ inline std::vector<double> random_unknowns(Index n) {
 /// side b = A x_exact of a reproducible random solution, and a vector x for the solver's answer;
 /// the SUNDIALS objects are freed on destruction (destroy the linear solver first).
 struct BoxSystem {
-  BoxSystem(Stabilisation stabilisation, double cj)
+  BoxSystem(std::string stabilisation, double cj)
       : mesh(solver_box_mesh()), config(solver_box_config(stabilisation)), problem(mesh, config) {
     if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
     const Index n = problem.size();

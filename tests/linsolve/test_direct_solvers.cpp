@@ -58,7 +58,7 @@ double componentwise_backward_error(SUNMatrix A, N_Vector x, N_Vector b) {
 }
 
 TEST_P(DirectSolver, SolvesAssembledSystem) {
-  test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
+  test::BoxSystem sys("gls", 1.0 / 6.4);
   LinearSolverStats stats;
   LinearSolverPtr ls = make_linear_solver(GetParam().config(), sys.ctx, &stats);
   for (int round = 0; round < 2; ++round) {
@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(All, DirectSolver, ::testing::ValuesIn(kChoices),
 // solution is unchanged, and a later matrix in which such a row is coupled is analysed again.
 TEST(MumpsDecoupledRows, SameSolutionAndAnalysedAgainWhenARowIsCoupledLater) {
   for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed}) {
-    test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
+    test::BoxSystem sys("gls", 1.0 / 6.4);
     const Index n = sys.problem.size();
     const sunindextype* Ap = SUNSparseMatrix_IndexPointers(sys.A);
     const sunindextype* Ai = SUNSparseMatrix_IndexValues(sys.A);
@@ -147,7 +147,7 @@ TEST(MumpsDecoupledRows, SameSolutionAndAnalysedAgainWhenARowIsCoupledLater) {
 // finds its single-precision factorisation singular, falls back to double-precision factors
 // for four factorisations, then tries single precision again; it solves to round-off.
 TEST(MumpsMixedPrecision, FallsBackToDoubleWhenSinglePrecisionFails) {
-  test::BoxSystem sys(Stabilisation::Gls, 1.0 / 6.4);
+  test::BoxSystem sys("gls", 1.0 / 6.4);
   const Index n = sys.problem.size();
   const sunindextype* Ap = SUNSparseMatrix_IndexPointers(sys.A);
   const sunindextype* Ai = SUNSparseMatrix_IndexValues(sys.A);

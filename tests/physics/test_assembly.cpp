@@ -13,7 +13,7 @@ namespace {
 Config column_config(bool gls) {
   Config cfg;
   cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
-  if (gls) cfg.stabilisation.type = Stabilisation::Gls;
+  if (gls) cfg.stabilisation.type = "gls";
   cfg.curves["ramp"] = LoadCurve{{{0.0, 0.0}, {1.0, 1.0}}};
   BoundaryCondition top{BcType::Displacement, "z1", 2, -0.05, {}, "ramp"};
   BoundaryCondition bottom{BcType::Displacement, "z0", 2, 0.0, {}, ""};

@@ -95,7 +95,7 @@ TEST(Gls, CoefficientUsesCircumradiusAndPermeability) {
   const Mesh mesh = test::box_mesh({2, 1, 1}, {2.0, 1.0, 1.0});
   Config cfg;
   cfg.material.set("permeability", 5e-3);
-  cfg.stabilisation.type = Stabilisation::Gls;
+  cfg.stabilisation.type = "gls";
   BiphasicProblem problem(mesh, cfg);
   for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e) {
     TetCorners c;

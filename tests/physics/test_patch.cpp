@@ -17,7 +17,7 @@ TEST(PatchTest, HomogeneousDeformationAndPressure) {
   for (bool gls : {false, true}) {
     Config cfg;
     cfg.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-3);
-    if (gls) cfg.stabilisation.type = Stabilisation::Gls;
+    if (gls) cfg.stabilisation.type = "gls";
     BiphasicProblem problem(mesh, cfg);
     Mat3 F0;
     F0 << 0.95, 0.04, 0.02, -0.03, 1.02, 0.05, 0.01, -0.02, 0.97;

@@ -89,7 +89,7 @@ ColumnRun run_column(VolumeRate form, double dt, double flux, double source) {
   const Mesh mesh = test::box_mesh({2, 2, 3}, {1.0, 1.0, 1.5});
   Config config;
   config.material = MaterialConfig::neo_hookean(0.2, 0.5, 1e-2);
-  config.stabilisation.type = Stabilisation::Gls;
+  config.stabilisation.type = "gls";
   config.time.t_end = 4.0;
   config.time.dt = dt;
   config.time.volume_rate = form;
@@ -116,7 +116,7 @@ ColumnRun run_column(VolumeRate form, double dt, double flux, double source) {
   if (flux != 0.0) bc(BcType::Flux, "z0", 0, flux, "");
   BiphasicProblem problem(mesh, config);
   if (source != 0.0) problem.set_fluid_source([source](const Vec3&, double) { return source; });
-  const auto integrator = make_time_integrator(problem, config, "");
+  const auto integrator = make_time_integrator(problem, config.time, config.linear_solver, "");
   std::vector<double> y(problem.size(), 0.0);
   problem.apply_dirichlet(0.0, y.data(), nullptr);
   VolumeBalance balance(problem, y);
@@ -165,7 +165,8 @@ TEST(VolumeBalance, BdfRefusesTheConservativeForm) {
   config.time.integrator = Integrator::Bdf;
   config.time.volume_rate = VolumeRate::Conservative;
   BiphasicProblem problem(mesh, config);
-  EXPECT_THROW(make_time_integrator(problem, config, ""), std::invalid_argument);
+  EXPECT_THROW(make_time_integrator(problem, config.time, config.linear_solver, ""),
+               std::invalid_argument);
   EXPECT_THROW(problem.set_conservative_volume_rate(-1.0), std::invalid_argument);
 }
 

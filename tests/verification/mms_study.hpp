@@ -57,7 +57,7 @@ inline MeshResult solve_on_cube(int n, const StudyOptions& options,
   Config cfg;
   cfg.material = MaterialConfig::neo_hookean(m.lambda, m.mu, m.k);
   cfg.quadrature_points = options.quadrature_points;
-  cfg.stabilisation.type = Stabilisation::None;
+  cfg.stabilisation.type = "none";
   for (const char* face : {"bottom", "top", "x0", "x1", "y0", "y1"}) {
     for (int c = 0; c < 3; ++c) cfg.bcs.push_back({BcType::Displacement, face, c, 0.0, {}, ""});
     cfg.bcs.push_back({BcType::Pressure, face, 0, 0.0, {}, ""});

@@ -56,7 +56,8 @@ FieldErrors solve(int n) {
   const Config cfg = read_case_file(kCase, overrides(n, true));
   const Mesh mesh = generate_column(cfg.mesh.column);
   BiphasicProblem problem(mesh, cfg);
-  std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(problem, cfg, "");
+  std::unique_ptr<TimeIntegrator> integrator =
+      make_time_integrator(problem, cfg.time, cfg.linear_solver, "");
   std::vector<double> y(problem.size(), 0.0);
   integrator->run(0.0, y, nullptr);
   return l2_errors(problem, y.data(), exact_u, exact_p, cfg.time.t_end);

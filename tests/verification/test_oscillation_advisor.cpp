@@ -49,6 +49,27 @@ TEST(OscillationAdvisor, RatioIsCDtOverTheLayerThicknessSquared) {
   EXPECT_NEAR(advice.faces.at(0).r_min, 0.2, 1e-9);
 }
 
+// With material regions, the drained face's r uses the material next to it: a top region four
+// times less permeable has a quarter of c, so r falls by 4 and the verdict can change; the same
+// region under the top (not touching it) leaves r alone.
+TEST(OscillationAdvisor, EachDrainedFaceUsesTheMaterialNextToIt) {
+  const std::vector<std::string> layered{"mesh.column.region_names=[\"lower\", \"upper\"]",
+                                         "mesh.column.region_tops=[0.5, 1.0]"};
+  for (const std::string& tight : {std::string("upper"), std::string("lower")}) {
+    Config config = column(0.6, layered);
+    RegionConfig region{tight, config.material};
+    region.material.set("permeability", 0.25 * config.material.get("permeability"));
+    config.regions.push_back(region);
+    const OscillationAdvice advice = advise_oscillation(build_mesh(config, ""), config);
+    EXPECT_NEAR(advice.consolidation_coefficient, kC, 1e-15);  // [material]'s
+    const DrainedFaceAdvice& top = advice.faces.at(0);
+    const double c_top = tight == "upper" ? 0.25 * kC : kC;
+    EXPECT_NEAR(top.consolidation_coefficient, c_top, 1e-15) << tight;
+    EXPECT_NEAR(top.r_min, c_top * config.time.dt / (kLayer * kLayer), 1e-9) << tight;
+    EXPECT_EQ(top.in_regime, tight == "upper") << tight;  // r = 0.15 < 0.33 only when upper
+  }
+}
+
 TEST(OscillationAdvisor, VerdictAgreesWithTheSolversFirstStep) {
   const Mesh mesh = build_mesh(column(1.0), "");
   // Two r on either side of the threshold: flagged ⇔ the first step overshoots q by > 1 %.

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "biphasic/io/config.hpp"
+#include "biphasic/linsolve/linear_solver_config.hpp"
 
 namespace biphasic {
 

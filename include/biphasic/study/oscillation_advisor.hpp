@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "biphasic/io/config.hpp"
@@ -26,6 +27,9 @@ inline constexpr double kOscillationThreshold = 0.33;
 /// One drained face (a boundary with a pressure condition).
 struct DrainedFaceAdvice {
   std::string face;
+  /// c = k(1) H_A of the face's material, the smallest over the tetrahedra on the face when
+  /// they belong to regions of different materials (the most oscillation-prone) [mm²/s].
+  double consolidation_coefficient = 0.0;
   long elements = 0;      ///< tetrahedra with a face on the boundary
   double h_min = 0.0;     ///< smallest height over the face [mm]
   double h_median = 0.0;  ///< [mm]
@@ -38,7 +42,7 @@ struct DrainedFaceAdvice {
 };
 
 struct OscillationAdvice {
-  double consolidation_coefficient = 0.0;  ///< c = k (λ + 2μ) [mm²/s]
+  double consolidation_coefficient = 0.0;  ///< c = k (λ + 2μ) of [material] [mm²/s]
   double first_step = 0.0;                 ///< Δt of the first step (BDF: a bound) [s]
   std::string first_step_source;           ///< "time.dt", "time.bdf.initial_step" or the IDA bound
   bool bdf = false;
@@ -50,6 +54,9 @@ struct OscillationAdvice {
 /// geometry; a tetrahedron with several faces on it counts once, with its smallest height).
 /// Throws std::runtime_error if the boundary does not exist or a face belongs to no tetrahedron.
 std::vector<double> heights_over_boundary(const Mesh& mesh, const std::string& boundary);
+/// The same, with each height's tetrahedron: (tetrahedron index, h_e) in mesh order.
+std::vector<std::pair<Index, double>> tetrahedra_over_boundary(const Mesh& mesh,
+                                                               const std::string& boundary);
 
 /// The advice for every boundary with a pressure condition, before the first step: r_e =
 /// c Δt / h_e² with Δt = time.dt (backward Euler), time.bdf.initial_step, or (BDF without it)

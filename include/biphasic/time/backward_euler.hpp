@@ -10,9 +10,10 @@
 #include <memory>
 #include <vector>
 
-#include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/linsolve/linear_solver_config.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
+#include "biphasic/time/time_config.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {

@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/linsolve/linear_solver_config.hpp"
 #include "biphasic/time/consistent_start.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
+#include "biphasic/time/time_config.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
@@ -44,9 +45,11 @@ class BdfIntegrator final : public TimeIntegrator {
   double atol_displacement_ = 0.0, atol_pressure_ = 0.0;
 };
 
-/// The integrator the configuration names.
+/// The integrator `time.integrator` names, with its settings and the linear solver's; BDF's
+/// step log (time.bdf.step_log) goes to `output_dir`/steps.csv.
 std::unique_ptr<TimeIntegrator> make_time_integrator(SemidiscreteSystem& problem,
-                                                     const Config& config,
+                                                     const TimeConfig& time,
+                                                     const LinearSolverConfig& linear_solver,
                                                      const std::string& output_dir);
 
 }  // namespace biphasic

@@ -6,8 +6,9 @@
 
 #include <vector>
 
-#include "biphasic/io/config.hpp"
+#include "biphasic/linsolve/linear_solver_config.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
+#include "biphasic/time/time_config.hpp"
 
 namespace biphasic {
 
