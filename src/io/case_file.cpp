@@ -810,10 +810,6 @@ void check_material_laws(const toml::table& root, const MaterialConfig& material
     }
     return nullptr;
   };
-  auto reads = [](const LawDescription& law, const std::string& name) {
-    return std::any_of(law.parameters.begin(), law.parameters.end(),
-                       [&name](const LawParameter& p) { return p.name == name; });
-  };
   std::set<std::string> visited;
   for (const LawFamily& family : families) {
     for (const LawDescription& law : family.laws) {
@@ -827,11 +823,11 @@ void check_material_laws(const toml::table& root, const MaterialConfig& material
         for (const LawFamily& f : families) {
           std::vector<std::string> readers;
           for (const LawDescription& l : f.laws) {
-            if (reads(l, parameter.name)) readers.push_back(l.name);
+            if (l.reads(parameter.name)) readers.push_back(l.name);
           }
           if (readers.empty()) continue;
           const LawDescription* c = chosen_law(f);
-          read = read || (c != nullptr && reads(*c, parameter.name));
+          read = read || (c != nullptr && c->reads(parameter.name));
           owners.push_back("material." + f.key + " = " + quoted_list(readers));
           chosen.push_back("material." + f.key + " = " +
                            shown_at(root, "material." + f.key, quote(f.laws.front().name)));

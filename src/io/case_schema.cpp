@@ -310,9 +310,7 @@ std::vector<Key<Config>> material_keys() {
         emitted.push_back(p.name);
         std::vector<std::string> readers;
         for (const LawDescription& other : family.laws) {
-          for (const LawParameter& q : other.parameters) {
-            if (q.name == p.name) readers.push_back(other.name);
-          }
+          if (other.reads(p.name)) readers.push_back(other.name);
         }
         std::string help = p.help;
         if (readers.size() < family.laws.size()) {

@@ -49,11 +49,6 @@ std::string material_case(const std::string& family, const std::string& law,
   return kMinimalCase + "[material]\n" + family + " = \"" + law + "\"\n" + extra;
 }
 
-bool reads(const LawDescription& law, const std::string& name) {
-  return std::any_of(law.parameters.begin(), law.parameters.end(),
-                     [&name](const LawParameter& p) { return p.name == name; });
-}
-
 TEST(CaseMaterialLaws, EveryDeclaredParameterIsReadUnderItsLaw) {
   int checked = 0;
   for (const LawFamily& family : material_law_families()) {
@@ -99,7 +94,7 @@ TEST(CaseMaterialLaws, AParameterIsRefusedUnderALawThatDoesNotReadIt) {
     for (const LawDescription& chosen : family.laws) {
       for (const LawDescription& other : family.laws) {
         for (const LawParameter& p : other.parameters) {
-          if (reads(chosen, p.name)) continue;
+          if (chosen.reads(p.name)) continue;
           const auto problems = problems_of(material_case(
               family.key, chosen.name, p.name + " = " + number(other_valid_value(p)) + "\n"));
           EXPECT_TRUE(has_problem(

@@ -64,6 +64,14 @@ struct LawDescription {
   /// ("material.") to write before parameter names in the message.
   std::function<std::optional<ParameterProblem>(const ParameterSource&, const std::string& prefix)>
       check;
+
+  /// Whether the law declares the parameter `parameter`.
+  bool reads(const std::string& parameter) const {
+    for (const LawParameter& p : parameters) {
+      if (p.name == parameter) return true;
+    }
+    return false;
+  }
 };
 
 /// A law the case file can select: it describes its keys and is built from their values.
