@@ -4,17 +4,36 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
+#include <tuple>
 #include <stdexcept>
 
 namespace biphasic {
 
 SparsityPattern::SparsityPattern(const Mesh& mesh)
-    : num_nodes_(mesh.num_nodes()),
+    : components_(3),
+      num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
       num_dofs_(3 * mesh.num_nodes() + mesh.num_vertices) {
+  build(mesh.tets, kTetEdges);
+}
+
+SparsityPattern::SparsityPattern(const SectionMesh& mesh)
+    : components_(2),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      num_dofs_(2 * mesh.num_nodes() + mesh.num_vertices) {
+  build(mesh.triangles, kTriEdges);
+}
+
+template <class Element, std::size_t NumEdges>
+void SparsityPattern::build(const std::vector<Element>& elements,
+                            const std::array<std::array<int, 2>, NumEdges>& edges) {
+  constexpr int kNodes = static_cast<int>(std::tuple_size_v<Element>);
+  constexpr int kCorners = kNodes - static_cast<int>(NumEdges);
+  const Index d = components_;
   // Node neighbourhoods through shared elements (each node is its own neighbour).
   std::vector<std::vector<Index>> adj(num_nodes_);
-  for (const Tet10& t : mesh.tets)
+  for (const Element& t : elements)
     for (Index a : t)
       for (Index b : t) adj[a].push_back(b);
   adj_ptr_.assign(num_nodes_ + 1, 0);
@@ -36,38 +55,38 @@ SparsityPattern::SparsityPattern(const Mesh& mesh)
     const Index deg = adj_ptr_[n + 1] - adj_ptr_[n];
     const Index* begin = adj_.data() + adj_ptr_[n];
     const Index nv = std::lower_bound(begin, begin + deg, num_vertices_) - begin;
-    return 3 * deg + nv;
+    return d * deg + nv;
   };
   colptr_.assign(num_dofs_ + 1, 0);
   for (Index n = 0; n < num_nodes_; ++n)
-    for (int c = 0; c < 3; ++c) colptr_[3 * n + c + 1] = column_length(n);
-  for (Index v = 0; v < num_vertices_; ++v) colptr_[3 * num_nodes_ + v + 1] = column_length(v);
+    for (Index c = 0; c < d; ++c) colptr_[d * n + c + 1] = column_length(n);
+  for (Index v = 0; v < num_vertices_; ++v) colptr_[d * num_nodes_ + v + 1] = column_length(v);
   for (Index j = 0; j < num_dofs_; ++j) colptr_[j + 1] += colptr_[j];
   rowind_.resize(colptr_.back());
   auto fill_column = [&](Index col, Index n) {
     Index pos = colptr_[col];
     for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1]; ++q)
-      for (int c = 0; c < 3; ++c) rowind_[pos++] = 3 * adj_[q] + c;
+      for (Index c = 0; c < d; ++c) rowind_[pos++] = d * adj_[q] + c;
     for (Index q = adj_ptr_[n]; q < adj_ptr_[n + 1] && adj_[q] < num_vertices_; ++q)
-      rowind_[pos++] = 3 * num_nodes_ + adj_[q];
+      rowind_[pos++] = d * num_nodes_ + adj_[q];
   };
   for (Index n = 0; n < num_nodes_; ++n)
-    for (int c = 0; c < 3; ++c) fill_column(3 * n + c, n);
-  for (Index v = 0; v < num_vertices_; ++v) fill_column(3 * num_nodes_ + v, v);
+    for (Index c = 0; c < d; ++c) fill_column(d * n + c, n);
+  for (Index v = 0; v < num_vertices_; ++v) fill_column(d * num_nodes_ + v, v);
 
   edge_ends_.resize(static_cast<std::size_t>(num_nodes_ - num_vertices_));
-  for (const Tet10& t : mesh.tets)
-    for (std::size_t k = 0; k < kTetEdges.size(); ++k)
-      edge_ends_[static_cast<std::size_t>(t[4 + k] - num_vertices_)] = {t[kTetEdges[k][0]],
-                                                                        t[kTetEdges[k][1]]};
+  for (const Element& t : elements)
+    for (std::size_t k = 0; k < NumEdges; ++k)
+      edge_ends_[static_cast<std::size_t>(t[kCorners + k] - num_vertices_)] = {t[edges[k][0]],
+                                                                               t[edges[k][1]]};
 
-  local_pos_.resize(mesh.tets.size());
-  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
-    const Tet10& t = mesh.tets[e];
-    for (int a = 0; a < 10; ++a) {
+  local_pos_.resize(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Element& t = elements[e];
+    for (int a = 0; a < kNodes; ++a) {
       const Index* begin = adj_.data() + adj_ptr_[t[a]];
       const Index* end = adj_.data() + adj_ptr_[t[a] + 1];
-      for (int b = 0; b < 10; ++b)
+      for (int b = 0; b < kNodes; ++b)
         local_pos_[e][a * 10 + b] =
             static_cast<std::int32_t>(std::lower_bound(begin, end, t[b]) - begin);
     }
@@ -113,6 +132,25 @@ void SparsityPattern::scatter(Index element, const Tet10& tet, const ElementMatr
   }
 }
 
+void SparsityPattern::scatter(Index element, const Tri6& tri, const SectionElementMatrix& A,
+                              const SectionElementMatrix& B, double c,
+                              const std::vector<char>& skip_row, double* values) const {
+  const auto& pos = local_pos_[element];
+  Index rows[kSectionElementDofs];
+  for (int r = 0; r < kSectionElementDofs; ++r) rows[r] = global_dof(tri, r);
+  for (int s = 0; s < kSectionElementDofs; ++s) {
+    const int a = s < 12 ? s / 2 : s - 12;
+    const Index base = colptr_[global_dof(tri, s)];
+    const Index deg = adj_ptr_[tri[a] + 1] - adj_ptr_[tri[a]];
+    for (int r = 0; r < kSectionElementDofs; ++r) {
+      if (skip_row[rows[r]]) continue;
+      const Index offset =
+          r < 12 ? 2 * pos[a * 10 + r / 2] + r % 2 : 2 * deg + pos[a * 10 + r - 12];
+      values[base + offset] += A(r, s) + c * B(r, s);
+    }
+  }
+}
+
 std::vector<Index> SparsityPattern::nested_dissection_order() const {
   // Vertex graph: the vertices among each vertex's node neighbours (they sort first).
   std::vector<idx_t> xadj(static_cast<std::size_t>(num_vertices_) + 1, 0), adjncy;
@@ -142,7 +180,7 @@ std::vector<Index> SparsityPattern::nested_dissection_order() const {
   std::vector<Index> order;
   order.reserve(static_cast<std::size_t>(num_dofs_));
   for (const auto& [key, n] : keyed) {
-    for (int c = 0; c < 3; ++c) order.push_back(u_dof(n, c));
+    for (int c = 0; c < components_; ++c) order.push_back(u_dof(n, c));
     if (n < num_vertices_) order.push_back(p_dof(n));
   }
   return order;

@@ -50,9 +50,10 @@ class IterativeSolver final : public detail::DirectSolver {
       : DirectSolver(stats),
         config_(config),
         saddle_(std::move(saddle)),
-        amg_({3, config.amg_threshold, config.amg_cycles, config.block_rtol}) {
+        amg_({saddle_.components, config.amg_threshold, config.amg_cycles, config.block_rtol}) {
     const auto n = static_cast<sunindextype>(saddle_.constrained.size());
-    if (n <= saddle_.num_u || saddle_.num_u % 3 != 0 || !saddle_.schur_term)
+    if (n <= saddle_.num_u || (saddle_.components != 2 && saddle_.components != 3) ||
+        saddle_.num_u % saddle_.components != 0 || !saddle_.schur_term)
       throw std::invalid_argument("iterative solver: inconsistent saddle-point structure");
     rhs_ = N_VNew_Serial(n, ctx);
     // Exactly max_iterations iterations at most: ⌊max/m⌋ cycles of m = min(restart, max)

@@ -19,11 +19,15 @@
 #include "biphasic/fe/tet_geometry.hpp"
 #include "biphasic/physics/boundary_integrals.hpp"
 #include "biphasic/physics/stabilisation/stabilisations.hpp"
+#include "boundary_data.hpp"
 
 namespace biphasic {
 
 namespace {
 
+using detail::bc_label;
+using detail::central_rate;
+using detail::largest_value;
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
@@ -52,11 +56,6 @@ double element_length(const TetCorners& x, ElementLength choice) {
   return 0.0;
 }
 
-std::string bc_label(std::size_t i, const BoundaryCondition& bc) {
-  return "boundary[" + std::to_string(i) + "] (" + to_string(bc.type) + " on '" + bc.boundary +
-         "')";
-}
-
 /// Axis (0, 1, 2) normal to every face of a plane boundary; throws otherwise.
 int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
   int axis = -1;
@@ -75,31 +74,6 @@ int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
     axis = best;
   }
   return axis;
-}
-
-/// ∂f/∂t by a central difference with step 6e-6·max(1, |t|) (≈ ε^(1/3): truncation and
-/// rounding errors balance near 1e-11 relative for smooth fields).
-template <class Field>
-auto central_rate(const Field& f, const Vec3& X, double t) {
-  const double h = 6e-6 * std::max(1.0, std::abs(t));
-  return (f(X, t + h) - f(X, t - h)) / (2.0 * h);
-}
-
-/// Largest |value · curve(t)| over [0, t_end] (curves are piecewise linear: their points
-/// inside the interval and its ends).
-double largest_value(const BoundaryCondition& bc, const std::map<std::string, LoadCurve>& curves,
-                     double t_end) {
-  const double scale = bc.type == BcType::Traction
-                           ? std::sqrt(bc.vector[0] * bc.vector[0] + bc.vector[1] * bc.vector[1] +
-                                       bc.vector[2] * bc.vector[2])
-                           : std::abs(bc.value);
-  auto it = bc.curve.empty() ? curves.end() : curves.find(bc.curve);
-  if (it == curves.end()) return scale;
-  const LoadCurve& c = it->second;
-  double m = std::max(std::abs(c.value(0.0)), std::abs(c.value(t_end)));
-  for (const auto& [t, v] : c.points)
-    if (t >= 0.0 && t <= t_end) m = std::max(m, std::abs(v));
-  return scale * m;
 }
 
 /// The solution's displacement [mm] and pressure [MPa] scales implied by the boundary data and

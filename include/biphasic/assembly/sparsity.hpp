@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
+#include "biphasic/physics/section_element.hpp"
 
 namespace biphasic {
 
@@ -29,6 +31,10 @@ class SparsityPattern {
   /// Global unknown of local element dof s (0–29: u of node s/3, component s%3; 30–33: p).
   Index global_dof(const Tet10& tet, int s) const {
     return s < 30 ? 3 * tet[s / 3] + s % 3 : 3 * num_nodes_ + tet[s - 30];
+  }
+  /// Global unknown of local dof s of a triangle (0–11: u of node s/2, component s%2; 12–14: p).
+  Index global_dof(const Tri6& tri, int s) const {
+    return s < 12 ? 2 * tri[s / 2] + s % 2 : 2 * num_nodes_ + tri[s - 12];
   }
   const std::vector<Index>& colptr() const { return colptr_; }
   const std::vector<Index>& rowind() const { return rowind_; }
@@ -60,8 +66,19 @@ class SparsityPattern {
   /// in `skip_row` (Dirichlet rows).
   void scatter(Index element, const Tet10& tet, const ElementMatrix& A, const ElementMatrix& B,
                double c, const std::vector<char>& skip_row, double* values) const;
+  /// The same for a triangle of a section mesh.
+  void scatter(Index element, const Tri6& tri, const SectionElementMatrix& A,
+               const SectionElementMatrix& B, double c, const std::vector<char>& skip_row,
+               double* values) const;
 
  private:
+  /// Neighbourhoods, columns, edge ends and local positions of a P2 mesh whose elements list
+  /// their corners first, then one node per edge of `edges`.
+  template <class Element, std::size_t NumEdges>
+  void build(const std::vector<Element>& elements,
+             const std::array<std::array<int, 2>, NumEdges>& edges);
+
+  int components_ = 3;
   Index num_nodes_ = 0, num_vertices_ = 0, num_dofs_ = 0;
   std::vector<Index> adj_ptr_, adj_;  ///< sorted node neighbourhoods (vertices sort first)
   std::vector<Index> colptr_, rowind_;

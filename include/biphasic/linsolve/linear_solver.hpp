@@ -69,7 +69,8 @@ struct PressureEntry {
 /// are displacements, which rows are Dirichlet rows, and an approximation of the Schur
 /// complement's coupling term −A_pu A_uu⁻¹ A_up for the matrix being set up.
 struct SaddlePointStructure {
-  sunindextype num_u = 0;         ///< unknowns [0, num_u) are displacements, 3 per node
+  sunindextype num_u = 0;         ///< unknowns [0, num_u) are displacements, node-major
+  int components = 3;             ///< displacement components per node (3, or 2 in 2-D)
   std::vector<char> constrained;  ///< Dirichlet rows (diagonal rows of the matrix)
   /// Appends the coupling term's entries (symmetric, free pressures only) to `out`.
   std::function<void(std::vector<PressureEntry>& out)> schur_term;
