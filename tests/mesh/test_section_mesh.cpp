@@ -1,5 +1,6 @@
 // SectionMesh: the rectangle generator (counts, areas, curve lengths and normals, grading, spec
 // checks), the invariant checks, and read_gmsh_section on hand-written .msh 2.2 files.
+#include <gmsh.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -352,6 +353,7 @@ class ScratchDir {
     std::error_code ec;
     fs::remove_all(path_, ec);
   }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {
     const std::string path = (path_ / name).string();
     std::ofstream(path) << text;
@@ -494,6 +496,51 @@ TEST(SectionMeshReadGmsh, CurveOffTheTrianglesNamesTheCurve) {
   EXPECT_CONTAINS(message, path);
   EXPECT_CONTAINS(message, "physical curve 'bottom'");
   EXPECT_CONTAINS(message, "node tag 5");
+}
+
+// The .geo of docs/section_meshes.md, meshed by gmsh at order 1 (format 2.2) and 2 (format 4.1).
+TEST(SectionMeshReadGmsh, DocumentedGeoFileIsRead) {
+  ScratchDir dir;
+  const std::string geo =
+      std::string(BIPHASIC_SOURCE_DIR) + "/tests/mesh/data/section_rectangle.geo";
+  for (const int order : {1, 2}) {
+    SCOPED_TRACE("order " + std::to_string(order));
+    const std::string msh = dir.file("section_" + std::to_string(order) + ".msh");
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::open(geo);
+    gmsh::model::mesh::generate(2);
+    gmsh::model::mesh::setOrder(order);
+    gmsh::option::setNumber("Mesh.MshFileVersion", order == 1 ? 2.2 : 4.1);
+    gmsh::write(msh);
+    gmsh::finalize();
+
+    const SectionMesh mesh = biphasic::read_gmsh_section(msh);
+    EXPECT_NEAR(area_of(mesh), 18.0 * 8.0, 1e-9);
+    EXPECT_EQ(mesh.boundary_names(),
+              (std::vector<std::string>{"axis", "lateral", "bottom", "top"}));
+    EXPECT_NEAR(curve_length(mesh, "axis"), 8.0, 1e-12);
+    EXPECT_NEAR(curve_length(mesh, "lateral"), 8.0, 1e-12);
+    EXPECT_NEAR(curve_length(mesh, "bottom"), 18.0, 1e-12);
+    EXPECT_NEAR(curve_length(mesh, "top"), 18.0, 1e-12);
+    const std::vector<std::pair<std::string, Point2>> normals{
+        {"axis", {-1, 0}}, {"lateral", {1, 0}}, {"bottom", {0, -1}}, {"top", {0, 1}}};
+    for (const auto& [name, normal] : normals) {
+      for (const auto& s : mesh.find_boundary(name)->segments) {
+        const Point2& a = mesh.nodes[s[0]];
+        const Point2& b = mesh.nodes[s[1]];
+        const double l = length(a, b);
+        EXPECT_NEAR((b[1] - a[1]) / l, normal[0], 1e-12) << name;
+        EXPECT_NEAR(-(b[0] - a[0]) / l, normal[1], 1e-12) << name;
+      }
+    }
+    EXPECT_EQ(mesh.region_names, std::vector<std::string>{"tissue"});
+    EXPECT_EQ(mesh.triangle_region, std::vector<int>(mesh.triangles.size(), 0));
+    ASSERT_NE(mesh.find_node_set("pin"), nullptr);
+    ASSERT_EQ(mesh.find_node_set("pin")->nodes.size(), 1u);
+    EXPECT_EQ(mesh.nodes[mesh.find_node_set("pin")->nodes[0]], (Point2{0, 0}));
+    EXPECT_EQ(mesh.file_tags.size(), static_cast<std::size_t>(mesh.num_nodes()));
+  }
 }
 
 }  // namespace
