@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -255,16 +256,32 @@ SectionMesh extract_section() {
     return it->second;
   };
 
+  const auto nv = static_cast<std::uint64_t>(num_vertices);
+  const auto key = [nv](Index a, Index b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) * nv +
+           static_cast<std::uint64_t>(std::max(a, b));
+  };
+  const auto not_an_edge = [](const RawCurve& c, std::size_t e) {
+    return std::runtime_error("physical curve '" + c.name + "' line (element tag " +
+                              std::to_string(c.elements[e]) + ") is not an edge of any triangle");
+  };
+
   SectionMesh mesh;
   if (!quadratic) {
     std::vector<std::array<Index, 3>> triangles(num_triangles);
-    for (std::size_t t = 0; t < num_triangles; ++t)
+    std::unordered_set<std::uint64_t> edges;
+    for (std::size_t t = 0; t < num_triangles; ++t) {
       for (std::size_t k = 0; k < 3; ++k) triangles[t][k] = new_index.at(tri_nodes[t * 3 + k]);
+      for (const auto& [a, b] : kTriEdges) edges.insert(key(triangles[t][a], triangles[t][b]));
+    }
     std::vector<LinearCurve> linear;
     for (const RawCurve& c : curves) {
       std::vector<std::array<Index, 2>> segments(c.elements.size());
-      for (std::size_t e = 0; e < segments.size(); ++e)
+      for (std::size_t e = 0; e < segments.size(); ++e) {
         for (std::size_t k = 0; k < 2; ++k) segments[e][k] = curve_node(c, e, k, 2);
+        if (segments[e][0] == segments[e][1] || !edges.count(key(segments[e][0], segments[e][1])))
+          throw not_an_edge(c, e);
+      }
       linear.emplace_back(c.name, std::move(segments));
     }
     mesh = section_p2_from_linear(std::move(points), triangles, linear);
@@ -276,11 +293,6 @@ SectionMesh extract_section() {
       for (std::size_t k = 0; k < 6; ++k) mesh.triangles[t][k] = new_index.at(tri_nodes[t * 6 + k]);
     // Each vertex pair's edge node, to name the line that does not match the triangles.
     std::unordered_map<std::uint64_t, Index> edge_node;
-    const auto nv = static_cast<std::uint64_t>(num_vertices);
-    const auto key = [nv](Index a, Index b) {
-      return static_cast<std::uint64_t>(std::min(a, b)) * nv +
-             static_cast<std::uint64_t>(std::max(a, b));
-    };
     for (const Tri6& tri : mesh.triangles)
       for (std::size_t e = 0; e < kTriEdges.size(); ++e)
         edge_node.emplace(key(tri[kTriEdges[e][0]], tri[kTriEdges[e][1]]), tri[3 + e]);
@@ -290,11 +302,7 @@ SectionMesh extract_section() {
         Line3& s = boundary.segments[e];
         for (std::size_t k = 0; k < 3; ++k) s[k] = curve_node(c, e, k, 3);
         const auto it = edge_node.find(key(s[0], s[1]));
-        if (it == edge_node.end() || it->second != s[2]) {
-          throw std::runtime_error("physical curve '" + c.name + "' line (element tag " +
-                                   std::to_string(c.elements[e]) +
-                                   ") is not an edge of any triangle");
-        }
+        if (s[0] == s[1] || it == edge_node.end() || it->second != s[2]) throw not_an_edge(c, e);
       }
       mesh.boundaries.push_back(std::move(boundary));
     }

@@ -496,6 +496,15 @@ TEST(SectionMeshReadGmsh, CurveOffTheTrianglesNamesTheCurve) {
   EXPECT_CONTAINS(message, path);
   EXPECT_CONTAINS(message, "physical curve 'bottom'");
   EXPECT_CONTAINS(message, "node tag 5");
+
+  // Nodes 2 and 4 are corners but not the ends of one triangle edge (the diagonal is 1–3).
+  text = linear_square();
+  text.replace(text.find("2 1 2 1 1 1 2"), 13, "2 1 2 1 1 2 4");
+  const std::string across = dir.write("across.msh", text);
+  const std::string across_message = error_of([&] { biphasic::read_gmsh_section(across); });
+  EXPECT_CONTAINS(across_message, across);
+  EXPECT_CONTAINS(across_message,
+                  "physical curve 'bottom' line (element tag 2) is not an edge of any triangle");
 }
 
 // The .geo of docs/section_meshes.md, meshed by gmsh at order 1 (format 2.2) and 2 (format 4.1).
