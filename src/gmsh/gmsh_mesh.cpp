@@ -643,18 +643,22 @@ Mesh gmsh_quarter_cylinder(const QuarterCylinderSpec& spec) {
   });
 }
 
+void with_msh_file(const std::string& path, const std::function<void()>& body) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw std::runtime_error("file does not exist");
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("not a regular file");
+  if (!std::ifstream(path)) throw std::runtime_error("file cannot be opened for reading");
+  GmshSession session;
+  prescan_msh(path);
+  gmsh::merge(path);
+  body();
+}
+
 Mesh gmsh_read(const std::string& path) {
   return detail::with_context("read_gmsh: '" + path + "'", [&] {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw std::runtime_error("file does not exist");
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      throw std::runtime_error("not a regular file");
-    }
-    if (!std::ifstream(path)) throw std::runtime_error("file cannot be opened for reading");
-    GmshSession session;
-    prescan_msh(path);
-    gmsh::merge(path);
-    return extract_current_model();
+    Mesh mesh;
+    with_msh_file(path, [&] { mesh = extract_current_model(); });
+    return mesh;
   });
 }
 

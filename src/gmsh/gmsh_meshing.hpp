@@ -9,6 +9,7 @@
 #include "../mesh/generator_support.hpp"
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic::detail {
 
@@ -52,5 +53,13 @@ Mesh gmsh_sphere_octant(const SphereOctantSpec& spec);
 
 /// The mesh of a .msh file (see read_gmsh).
 Mesh gmsh_read(const std::string& path);
+
+/// Checks that `path` is a readable regular file, checks it with prescan_msh, merges it into a
+/// fresh model of a scoped gmsh session and runs `body` on that model. Throws
+/// std::runtime_error (or gmsh's std::string) without naming the file: wrap in with_context.
+void with_msh_file(const std::string& path, const std::function<void()>& body);
+
+/// The section mesh of a .msh file (see read_gmsh_section).
+SectionMesh gmsh_read_section(const std::string& path);
 
 }  // namespace biphasic::detail

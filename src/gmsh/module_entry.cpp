@@ -7,6 +7,7 @@ extern "C" __attribute__((visibility("default"))) const biphasic::detail::GmshBa
 biphasic_gmsh_backend() {
   static const biphasic::detail::GmshBackend backend{
       biphasic::detail::GmshBackend::kAbi, &biphasic::detail::gmsh_quarter_cylinder,
-      &biphasic::detail::gmsh_sphere_octant, &biphasic::detail::gmsh_read};
+      &biphasic::detail::gmsh_sphere_octant, &biphasic::detail::gmsh_read,
+      &biphasic::detail::gmsh_read_section};
   return &backend;
 }

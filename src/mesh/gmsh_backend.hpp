@@ -7,17 +7,19 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic::detail {
 
 /// What the module provides (its symbol "biphasic_gmsh_backend" returns a pointer to one).
 struct GmshBackend {
   /// Layout and meaning of this table; bumped whenever either changes.
-  static constexpr int kAbi = 4;  // 4: Mesh gained tet_region and region_names
+  static constexpr int kAbi = 5;  // 5: read_section (SectionMesh) added
   int abi;
   Mesh (*quarter_cylinder)(const QuarterCylinderSpec&);  ///< spec already validated
   Mesh (*sphere_octant)(const SphereOctantSpec&);        ///< spec already validated
   Mesh (*read)(const std::string& path);
+  SectionMesh (*read_section)(const std::string& path);
 };
 
 /// The module, loaded on the first call: from $BIPHASIC_GMSH_MODULE if set, else from where

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 #include "generator_support.hpp"
 #include "gmsh_backend.hpp"
 
@@ -53,5 +54,9 @@ Mesh generate_sphere_octant(const SphereOctantSpec& spec) {
 }
 
 Mesh read_gmsh(const std::string& path) { return detail::gmsh_backend().read(path); }
+
+SectionMesh read_gmsh_section(const std::string& path) {
+  return detail::gmsh_backend().read_section(path);
+}
 
 }  // namespace biphasic

@@ -1,5 +1,6 @@
 // gmsh .msh reader (ASCII and binary, formats 2.2 and 4.1): the input is written to a file and
-// read; any file is either a valid Mesh (check_mesh passes) or a std::runtime_error.
+// read, as a tetrahedral mesh and as a section mesh; any file is either a valid Mesh (check_mesh
+// passes) or a std::runtime_error, and likewise a valid SectionMesh (check_section_mesh) or one.
 #include <unistd.h>
 
 #include <cstddef>
@@ -12,6 +13,7 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string path = (std::filesystem::temp_directory_path() /
@@ -24,6 +26,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const biphasic::Mesh mesh = biphasic::read_gmsh(path);
     biphasic::check_mesh(mesh);  // must hold for whatever read_gmsh returns
+  } catch (const std::runtime_error&) {
+  }
+  try {
+    const biphasic::SectionMesh section = biphasic::read_gmsh_section(path);
+    biphasic::check_section_mesh(section);
   } catch (const std::runtime_error&) {
   }
   return 0;

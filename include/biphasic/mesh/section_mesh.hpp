@@ -65,15 +65,18 @@ double triangle_signed_area(const Point2& a, const Point2& b, const Point2& c);
 void orient_triangles(SectionMesh& mesh);
 
 /// Orients every boundary segment so that the body lies on its left (swaps its ends where
-/// needed). Throws std::runtime_error naming the boundary and the segment if a segment is
+/// needed); on a curve inside the body (an edge of two triangles) the first triangle having the
+/// edge decides. Throws std::runtime_error naming the boundary and the segment if a segment is
 /// the edge of no triangle.
 void orient_boundary_segments(SectionMesh& mesh);
 
 /// Checks every SectionMesh invariant: indices in range, corners < num_vertices ≤ edge
 /// nodes, every vertex a corner of some triangle, one edge node per vertex pair shared by all
 /// triangles and boundary segments using that edge, positive areas, boundary segments on
-/// triangle edges and oriented, node sets' nodes in range, names distinct, regions
-/// consistent. Throws std::runtime_error describing the first violation found.
+/// triangle edges and oriented (some triangle runs along the segment from end 0 to end 1 in
+/// its counter-clockwise order), node sets' nodes in range, names distinct (boundaries, node
+/// sets, regions; no node set named like a boundary), regions consistent, file_tags empty or
+/// one per node. Throws std::runtime_error describing the first violation found.
 void check_section_mesh(const SectionMesh& mesh);
 
 /// The rectangle 0 ≤ r ≤ width, 0 ≤ z ≤ height of a cylinder's meridian section (or a
@@ -82,10 +85,10 @@ void check_section_mesh(const SectionMesh& mesh);
 /// direction), cell sizes graded geometrically toward the named curves. Boundary curves, in this
 /// order: "axis" (r = 0), "lateral" (r = width), "bottom" (z = 0), "top" (z = height).
 struct SectionRectangleSpec {
-  double width = 18.0;   ///< radius (axisymmetric) or half-width (plane strain) [mm]
-  double height = 8.0;   ///< [mm]
-  int nr = 18;           ///< cells across the width, ≥ 1
-  int nz = 8;            ///< cells over the height, ≥ 1
+  double width = 18.0;  ///< radius (axisymmetric) or half-width (plane strain) [mm]
+  double height = 8.0;  ///< [mm]
+  int nr = 18;          ///< cells across the width, ≥ 1
+  int nz = 8;           ///< cells over the height, ≥ 1
   /// Curves the cells are graded toward: any of "axis", "lateral", "bottom", "top".
   std::vector<std::string> grading_curves;
   /// Largest over smallest cell size in each graded direction (≥ 1; 1 = uniform); the
