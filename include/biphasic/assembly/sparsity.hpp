@@ -16,18 +16,23 @@
 
 namespace biphasic {
 
-/// Unknowns y = (u of every node, node-major: 3n + c; then p of every vertex: 3N + v).
-/// The CSC pattern couples every pair of unknowns that share an element (all four blocks
+/// Unknowns y = (u of every node, node-major: dn + c; then p of every vertex: dN + v), with
+/// d = components() displacement components per node (3 on a tetrahedral mesh, 2 on a section
+/// mesh). The CSC pattern couples every pair of unknowns that share an element (all four blocks
 /// u–u, u–p, p–u, p–p); row indices are sorted within each column.
 class SparsityPattern {
  public:
   explicit SparsityPattern(const Mesh& mesh);
+  /// The pattern of a two-dimensional model: two displacement components per node.
+  explicit SparsityPattern(const SectionMesh& mesh);
 
   Index size() const { return num_dofs_; }
-  Index num_u() const { return 3 * num_nodes_; }
+  /// Displacement components per node (3 or 2).
+  int components() const { return components_; }
+  Index num_u() const { return components_ * num_nodes_; }
   Index nnz() const { return static_cast<Index>(rowind_.size()); }
-  Index u_dof(Index node, int c) const { return 3 * node + c; }
-  Index p_dof(Index vertex) const { return 3 * num_nodes_ + vertex; }
+  Index u_dof(Index node, int c) const { return components_ * node + c; }
+  Index p_dof(Index vertex) const { return components_ * num_nodes_ + vertex; }
   /// Global unknown of local element dof s (0–29: u of node s/3, component s%3; 30–33: p).
   Index global_dof(const Tet10& tet, int s) const {
     return s < 30 ? 3 * tet[s / 3] + s % 3 : 3 * num_nodes_ + tet[s - 30];
