@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "biphasic/mesh/coincident_nodes.hpp"
 #include "biphasic/mesh/constraint_analysis.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 
@@ -91,6 +93,8 @@ class Preflight {
         return "the generated column mesh";
       case MeshSource::SphereOctant:
         return "the generated sphere-octant mesh";
+      case MeshSource::Section:
+        return "the generated section mesh";
       case MeshSource::QuarterCylinder:
         break;
     }
@@ -445,7 +449,81 @@ std::vector<std::string> preflight(const Config& config, const Mesh& mesh) {
   return Preflight(config, mesh).run();
 }
 
+SectionMesh build_case_section_mesh(const Config& config) {
+  const std::string source = config.case_file.empty() ? "case" : config.case_file;
+  try {
+    if (config.mesh.source == MeshSource::Section)
+      return generate_section_rectangle(config.mesh.section);
+    return read_gmsh_section(config.mesh.file);
+  } catch (const std::exception& e) {
+    if (config.mesh.source == MeshSource::Section)
+      throw CaseError({source + ": [mesh.section]: " + e.what()});
+    throw CaseError({source + ": mesh.file = " + quoted(config.mesh.file) + ": " + e.what()});
+  }
+}
+
+std::vector<std::string> preflight_section(const Config& config, const SectionMesh& mesh) {
+  const std::string source = config.case_file.empty() ? "case" : config.case_file;
+  std::vector<std::string> names = mesh.boundary_names();
+  for (const NodeSet& set : mesh.node_sets) names.push_back(set.name);
+  check_boundaries(config, names);
+  std::vector<std::string> problems, notes;
+  try {
+    const SectionProblem problem(mesh, section_model(config.model), config);
+    // Rigid-body modes: the held displacement components and where they are.
+    const std::vector<char>& held = problem.constrained();
+    bool x_held = false, y_held = false;
+    // Rotation about (x0, y0) is free iff every held x lies at y = y0 and every held y at x = x0.
+    std::optional<double> y0, x0;
+    bool rotation_held = false;
+    for (Index n = 0; n < mesh.num_nodes(); ++n) {
+      const auto& X = mesh.nodes[static_cast<std::size_t>(n)];
+      if (held[static_cast<std::size_t>(problem.pattern().u_dof(n, 0))]) {
+        x_held = true;
+        if (y0 && std::abs(*y0 - X[1]) > 1e-12) rotation_held = true;
+        y0 = X[1];
+      }
+      if (held[static_cast<std::size_t>(problem.pattern().u_dof(n, 1))]) {
+        y_held = true;
+        if (x0 && std::abs(*x0 - X[0]) > 1e-12) rotation_held = true;
+        x0 = X[0];
+      }
+    }
+    std::vector<std::string> free;
+    if (config.model == ModelKind::Axisymmetric) {
+      if (!y_held) free.push_back("the translation along the axis (y)");
+    } else {
+      if (!x_held) free.push_back("the translation in x");
+      if (!y_held) free.push_back("the translation in y");
+      if (x_held && y_held && !rotation_held) free.push_back("the rotation about z");
+    }
+    if (!free.empty()) {
+      std::string list;
+      for (std::size_t i = 0; i < free.size(); ++i) list += (i ? ", " : "") + free[i];
+      const std::string text =
+          "the displacement and symmetry conditions leave rigid-body modes free: " + list;
+      if (config.constraints.allow_free_rigid_modes)
+        notes.push_back("note: " + text + " (constraints.allow_free_rigid_modes = true)");
+      else
+        problems.push_back(source + ": " + text +
+                           "; hold them, or set constraints.allow_free_rigid_modes = true");
+    }
+  } catch (const CaseError&) {
+    throw;
+  } catch (const std::exception& e) {
+    problems.push_back(source + ": " + e.what());
+  }
+  if (!problems.empty()) throw CaseError(std::move(problems));
+  return notes;
+}
+
 std::vector<std::string> check_case(const Config& config) {
+  if (is_two_dimensional(config.model)) {
+    const SectionMesh mesh = build_case_section_mesh(config);
+    std::vector<std::string> notes = preflight_section(config, mesh);
+    for (const std::string& line : check_section_probes(config, mesh)) notes.push_back("  " + line);
+    return notes;
+  }
   Config quiet = config;
   quiet.mesh.cylinder.write_msh.clear();  // check writes nothing
   const Mesh mesh = build_case_mesh(quiet, "");

@@ -15,7 +15,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -32,6 +34,7 @@
 #include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/section_problem.hpp"
 #include "biphasic/physics/volume_balance.hpp"
 #include "biphasic/study/measures.hpp"
 #include "biphasic/study/oscillation_advisor.hpp"
@@ -75,6 +78,20 @@ std::uint64_t case_fingerprint(const Config& config, const Mesh& mesh) {
   };
   h = fnv1a64(bytes(mesh.nodes), h);
   return fnv1a64(bytes(mesh.tets), h);
+}
+
+/// The same for a two-dimensional model's section mesh.
+std::uint64_t case_fingerprint(const Config& config, const SectionMesh& mesh) {
+  nlohmann::json physical = config_to_json(config);
+  physical.erase("case_file");
+  physical.erase("title");
+  if (physical.contains("time")) physical["time"].erase("t_end");
+  std::uint64_t h = fnv1a64(physical.dump());
+  auto bytes = [](const auto& v) {
+    return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v.front()));
+  };
+  h = fnv1a64(bytes(mesh.nodes), h);
+  return fnv1a64(bytes(mesh.triangles), h);
 }
 
 /// Checks that a checkpoint belongs to this case and mesh and lies before time.t_end.
@@ -140,6 +157,8 @@ Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_
       return read_gmsh(config.mesh.file);
     case MeshSource::Column:
       return generate_column(config.mesh.column);
+    case MeshSource::Section:
+      throw std::logic_error("build_mesh: a section mesh is built by build_case_section_mesh");
     case MeshSource::SphereOctant: {
       SphereOctantSpec spec = config.mesh.sphere_octant;
       spec.write_msh = in_output_dir(config.mesh.cylinder.write_msh);
@@ -179,15 +198,30 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
 
   say("biphasic " + std::string(BIPHASIC_VERSION) + ": " +
       (config.title.empty() ? config.case_file : config.title));
+  // The mesh and the problem: tetrahedra, or a two-dimensional section.
+  const bool planar = is_two_dimensional(config.model);
   auto t0 = Clock::now();
   bool mesh_from_cache = false;
-  const Mesh mesh = build_case_mesh(config, out_dir.string(), &mesh_from_cache);
+  std::unique_ptr<Mesh> mesh3;
+  std::unique_ptr<SectionMesh> mesh2;
+  if (planar)
+    mesh2 = std::make_unique<SectionMesh>(build_case_section_mesh(config));
+  else
+    mesh3 = std::make_unique<Mesh>(build_case_mesh(config, out_dir.string(), &mesh_from_cache));
   const double mesh_seconds = seconds_since(t0);
-  for (const std::string& note : preflight(config, mesh)) say(note);
-  std::vector<Probe> probes = build_probes(config, mesh);
+  for (const std::string& note :
+       planar ? preflight_section(config, *mesh2) : preflight(config, *mesh3))
+    say(note);
+  std::vector<Probe> probes =
+      planar ? build_section_probes(config, *mesh2) : build_probes(config, *mesh3);
 
   t0 = Clock::now();
-  BiphasicProblem problem(mesh, config);
+  std::unique_ptr<BiphasicModel> problem_ptr;
+  if (planar)
+    problem_ptr = std::make_unique<SectionProblem>(*mesh2, section_model(config.model), config);
+  else
+    problem_ptr = std::make_unique<BiphasicProblem>(*mesh3, config);
+  BiphasicModel& problem = *problem_ptr;
   const std::unique_ptr<TimeIntegrator> integrator_ptr =
       make_time_integrator(problem, config.time, config.linear_solver, out_dir.string());
   TimeIntegrator& integrator = *integrator_ptr;
@@ -195,7 +229,8 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   integrator.set_progress_interval(options.progress_interval);
   const double setup_seconds = seconds_since(t0);
   const fs::path checkpoint_path = out_dir / kCheckpointName;
-  const std::uint64_t case_hash = case_fingerprint(config, mesh);
+  const std::uint64_t case_hash =
+      planar ? case_fingerprint(config, *mesh2) : case_fingerprint(config, *mesh3);
   if (resume) {
     accept_checkpoint(*resume, checkpoint_path.string(), case_hash, problem.size(), config.time);
     try {
@@ -207,19 +242,23 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
         std::to_string(resume->step) + " at t = " + number_text(resume->t) + " s");
     write_json_atomically(summary_path, summary);
   }
-  summary["mesh"] = {{"nodes", mesh.num_nodes()},
-                     {"vertices", mesh.num_vertices},
-                     {"tetrahedra", mesh.tets.size()},
+  const Index num_nodes = planar ? mesh2->num_nodes() : mesh3->num_nodes();
+  const Index num_vertices = planar ? mesh2->num_vertices : mesh3->num_vertices;
+  summary["mesh"] = {{"nodes", num_nodes},
+                     {"vertices", num_vertices},
+                     {planar ? "triangles" : "tetrahedra", problem.num_elements()},
                      {"unknowns", problem.size()},
                      {"displacement_unknowns", problem.num_u()},
                      {"pressure_unknowns", problem.size() - problem.num_u()},
                      {"jacobian_nonzeros", problem.pattern().nnz()}};
+  summary["model"] = to_string(config.model);
   {
     std::ostringstream s;
-    s << "mesh: " << mesh.num_nodes() << " nodes (" << mesh.num_vertices << " vertices), "
-      << mesh.tets.size() << " tetrahedra, " << problem.size() << " unknowns, "
-      << problem.pattern().nnz() << " Jacobian nonzeros (" << mesh_seconds << " s"
-      << (mesh_from_cache ? ", from the mesh cache" : "") << ")";
+    s << "mesh: " << num_nodes << " nodes (" << num_vertices << " vertices), "
+      << problem.num_elements()
+      << (planar ? " triangles (" + to_string(config.model) + ")" : " tetrahedra") << ", "
+      << problem.size() << " unknowns, " << problem.pattern().nnz() << " Jacobian nonzeros ("
+      << mesh_seconds << " s" << (mesh_from_cache ? ", from the mesh cache" : "") << ")";
     say(s.str());
   }
   if (config.linear_solver.type == LinearSolverType::Iterative && problem.has_gls()) {
@@ -227,7 +266,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     // that algebraic multigrid handles poorly once it outweighs the solid's λ + 2μ.
     // Largest c_e / H_A over the elements, each with its own material's H_A.
     double ratio = 0.0;
-    for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
+    for (Index e = 0; e < problem.num_elements(); ++e)
       ratio = std::max(
           ratio, problem.gls_coefficient(e) / config.time.dt / problem.laws_of(e).p_wave_modulus());
     summary["gls_penalty_ratio"] = ratio;
@@ -245,20 +284,38 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   }
 
   // First-step oscillation regime at each drained face (r = c dt / h² against its threshold).
-  const OscillationAdvice advice = advise_oscillation(mesh, config);
-  summary["advisor"] = to_json(advice);
-  for (const std::string& line : advice_lines(advice)) say(line);
+  if (planar) {
+    summary["advisor"] = {{"note", "not available for two-dimensional models"}};
+  } else {
+    const OscillationAdvice advice = advise_oscillation(*mesh3, config);
+    summary["advisor"] = to_json(advice);
+    for (const std::string& line : advice_lines(advice)) say(line);
+  }
 
   // Observers: probes, fields, per-step records. A restart first drops what the earlier run
   // wrote after its checkpoint, then appends.
   const bool append = resume != nullptr;
   ProbeRecorder probe_csv(std::move(probes), problem, out_dir.string(),
                           append ? std::optional<double>(resume->t) : std::nullopt);
-  std::unique_ptr<FieldOutput> fields;
+  // The field files, written through the output of the model's mesh.
+  std::function<void(double, const std::vector<double>&)> write_fields;
   if (!config.output.fields.empty()) {
-    fields =
-        std::make_unique<FieldOutput>(config.output.fields, out_dir.string(), mesh,
-                                      append ? std::optional<double>(resume->t) : std::nullopt);
+    const std::optional<double> keep = append ? std::optional<double>(resume->t) : std::nullopt;
+    if (planar) {
+      auto out = std::make_shared<SectionFieldOutput>(config.output.fields, out_dir.string(),
+                                                      *mesh2, keep);
+      const auto& section = static_cast<const SectionProblem&>(problem);
+      write_fields = [out, &section](double t, const std::vector<double>& y) {
+        out->write(section, t, y);
+      };
+    } else {
+      auto out =
+          std::make_shared<FieldOutput>(config.output.fields, out_dir.string(), *mesh3, keep);
+      const auto& body = static_cast<const BiphasicProblem&>(problem);
+      write_fields = [out, &body](double t, const std::vector<double>& y) {
+        out->write(body, t, y);
+      };
+    }
   }
   std::unique_ptr<ReactionCsv> reaction_csv;
   if (!config.output.reactions.empty()) {
@@ -275,14 +332,23 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   // Fluid-volume balance (backward Euler only: BDF's observer sees the outputs, not its steps).
   std::unique_ptr<VolumeBalance> balance;
   std::vector<double> u, p;
+  // The probes read u with three components per node; a section's third is 0.
+  const int components = problem.pattern().components();
   auto split = [&](const std::vector<double>& y) {
-    u.assign(y.begin(), y.begin() + problem.num_u());
+    if (components == 3) {
+      u.assign(y.begin(), y.begin() + problem.num_u());
+    } else {
+      u.assign(static_cast<std::size_t>(3 * num_nodes), 0.0);
+      for (Index n = 0; n < num_nodes; ++n)
+        for (int c = 0; c < components; ++c)
+          u[static_cast<std::size_t>(3 * n + c)] = y[static_cast<std::size_t>(components * n + c)];
+    }
     p.assign(y.begin() + problem.num_u(), y.end());
   };
   auto write_output = [&](double t, const std::vector<double>& y, const std::vector<double>& ydot) {
     split(y);
     const std::optional<LineMeasures> m = probe_csv.write(t, u, p);
-    if (fields) fields->write(problem, t, y);
+    if (write_fields) write_fields(t, y);
     nlohmann::json o = m ? measures_json(*m) : nlohmann::json::object();
     o["t"] = t;
     if (reaction_csv) {

@@ -25,7 +25,15 @@ const Names<MeshSource>& mesh_source_names() {
   static const Names<MeshSource> names{{"quarter_cylinder", MeshSource::QuarterCylinder},
                                        {"column", MeshSource::Column},
                                        {"sphere_octant", MeshSource::SphereOctant},
+                                       {"section", MeshSource::Section},
                                        {"file", MeshSource::File}};
+  return names;
+}
+
+const Names<ModelKind>& model_names() {
+  static const Names<ModelKind> names{{"three_dimensional", ModelKind::ThreeDimensional},
+                                      {"axisymmetric", ModelKind::Axisymmetric},
+                                      {"plane_strain", ModelKind::PlaneStrain}};
   return names;
 }
 
@@ -343,14 +351,24 @@ std::vector<Key<Config>> build_global_keys() {
       [](auto& c) -> auto& { return c.title; }));
 
   keys.push_back(choice_key<C>(
+      "model", model_names(),
+      "Kinematics: the three-dimensional body on tetrahedra, or a two-dimensional section on "
+      "6-node triangles (mesh.source = \"section\" or a .msh file of triangles): axisymmetric "
+      "(x = r, y = z; forces over the full circle) or plane strain (u_z = 0; forces per mm of "
+      "thickness). Components and points are then (x, y) with z = 0.",
+      [](auto& c) -> auto& { return c.model; }));
+  keys.push_back(choice_key<C>(
       "mesh.source", mesh_source_names(),
       "Where the mesh comes from: a generated quarter cylinder (keys mesh.radius ... "
-      "mesh.grading_distance), column ([mesh.column]) or sphere octant ([mesh.sphere_octant]), "
-      "or a gmsh file (mesh.file). Keys of another generated source are an error.",
+      "mesh.grading_distance), column ([mesh.column]), sphere octant ([mesh.sphere_octant]) or, "
+      "for a two-dimensional model, rectangular section ([mesh.section]); or a gmsh file "
+      "(mesh.file). Keys of another generated source are an error.",
       [](auto& c) -> auto& { return c.mesh.source; }));
   keys.push_back(string_key<C>(
       "mesh.file",
-      "gmsh .msh file (format 2.2 or 4.1, 4- or 10-node tetrahedra, named physical surfaces). "
+      "gmsh .msh file (format 2.2 or 4.1): 4- or 10-node tetrahedra with named physical "
+      "surfaces, or, for a two-dimensional model, 3- or 6-node triangles in z = 0 with named "
+      "physical curves. "
       "Required when mesh.source = \"file\", and must then exist; a relative path is relative "
       "to the case file's folder.",
       [](auto& c) -> auto& { return c.mesh.file; }));
@@ -462,6 +480,30 @@ std::vector<Key<Config>> build_global_keys() {
       "mesh.sphere_octant.grading_distance", above(0), "mm",
       "Distance from the surface over which the element size grows back to lc.",
       [](auto& c) -> auto& { return c.mesh.sphere_octant.grading_distance; }));
+
+  keys.push_back(number_key<C>(
+      "mesh.section.width", above(0), "mm",
+      "Extent in x (the radius of an axisymmetric body): curves axis (x = 0) and lateral.",
+      [](auto& c) -> auto& { return c.mesh.section.width; }));
+  keys.push_back(number_key<C>(
+      "mesh.section.height", above(0), "mm",
+      "Extent in y (= z of an axisymmetric body): "
+      "curves bottom (y = 0) and top.",
+      [](auto& c) -> auto& { return c.mesh.section.height; }));
+  keys.push_back(integer_key<C>(
+      "mesh.section.nr", at_least(1), {}, "Cells across the width.",
+      [](auto& c) -> auto& { return c.mesh.section.nr; }));
+  keys.push_back(integer_key<C>(
+      "mesh.section.nz", at_least(1), {}, "Cells over the height.",
+      [](auto& c) -> auto& { return c.mesh.section.nz; }));
+  keys.push_back(string_list_key<C>(
+      "mesh.section.grading_curves", {"axis", "lateral", "bottom", "top"},
+      "Curves the cells shrink toward, geometrically (empty = uniform).",
+      [](auto& c) -> auto& { return c.mesh.section.grading_curves; }));
+  keys.push_back(number_key<C>(
+      "mesh.section.grading_ratio", from_to(1, 1e6), "",
+      "Largest over smallest cell size in each graded direction (1 = uniform).",
+      [](auto& c) -> auto& { return c.mesh.section.grading_ratio; }));
 
   for (auto& key : material_keys()) keys.push_back(std::move(key));
 
@@ -1236,6 +1278,10 @@ nlohmann::json config_to_json(const Config& config) {
 }
 
 std::string to_string(BcType type) { return case_schema::bc_type_name(type); }
+
+std::string to_string(ModelKind model) {
+  return case_schema::name_of(case_schema::model_names(), model);
+}
 
 std::string to_string(FactorPrecision precision) {
   return case_schema::name_of(case_schema::precision_names(), precision);

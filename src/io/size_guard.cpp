@@ -188,7 +188,20 @@ SizeEstimate estimate_size(const Config& config) {
       if (s.grading_ratio > 1.0) e.keys += ", mesh.sphere_octant.grading_ratio";
       break;
     }
+    case MeshSource::Section: {
+      // Triangles, not tetrahedra: 2 unknowns per node and 1 per vertex.
+      const double nr = m.section.nr, nz = m.section.nz;
+      e.tets = 2 * nr * nz;
+      e.unknowns = 2 * (2 * nr + 1) * (2 * nz + 1) + (nr + 1) * (nz + 1);
+      e.keys = "mesh.section.nr, mesh.section.nz";
+      break;
+    }
     case MeshSource::File:
+      if (is_two_dimensional(config.model)) {
+        // A section mesh: small next to any tetrahedral one; not estimated before reading.
+        e.keys = "mesh.file";
+        break;
+      }
       e.tets = msh_tet_count(m.file);
       e.unknowns = kUnknownsPerTet * e.tets;
       e.keys = "mesh.file";

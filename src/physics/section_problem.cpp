@@ -207,13 +207,13 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
             const Eigen::Vector2d t = (point(mesh, s[1]) - point(mesh, s[0])).normalized();
             const Eigen::Vector2d m = (point(mesh, s[2]) - point(mesh, s[0]));
             const int c = std::abs(t(0)) > std::abs(t(1)) ? 1 : 0;  // normal component
-            const bool straight = std::abs(t(1 - c)) > 1.0 - 1e-8 && std::abs(m(c)) <= 1e-8 * m.norm();
+            const bool straight =
+                std::abs(t(1 - c)) > 1.0 - 1e-8 && std::abs(m(c)) <= 1e-8 * m.norm();
             if (!straight || (component >= 0 && c != component)) {
               std::ostringstream msg;
               msg << bc_label(i, bc) << ": symmetry needs a straight curve normal to "
                   << axis_names[0] << " or " << axis_names[1] << "; its segment from "
-                  << mesh.describe_node(s[0]) << " to " << mesh.describe_node(s[1])
-                  << " is not";
+                  << mesh.describe_node(s[0]) << " to " << mesh.describe_node(s[1]) << " is not";
               throw std::runtime_error(msg.str());
             }
             component = c;
@@ -259,7 +259,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
               const double ds = tangent.norm() * dA;
               for (int a = 0; a < 3; ++a)
                 for (int c = 0; c < 2; ++c)
-                  load[pattern_.u_dof(s[a], c)] -= N(a) * bc.vector[static_cast<std::size_t>(c)] * ds;
+                  load[pattern_.u_dof(s[a], c)] -=
+                      N(a) * bc.vector[static_cast<std::size_t>(c)] * ds;
             } else {
               // t̄ = −value N, N ds = (t_y, −t_x) dξ (the body lies on the segment's left).
               const Eigen::Vector2d n_ds(tangent(1), -tangent(0));
@@ -282,7 +283,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   if (axisymmetric) {
     const double tol = 1e-10 * mesh_extent(mesh).maxCoeff();
     for (Index n = 0; n < mesh.num_nodes(); ++n)
-      if (std::abs(mesh.nodes[n][0]) <= tol) constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, -1);
+      if (std::abs(mesh.nodes[n][0]) <= tol)
+        constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, -1);
   }
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
@@ -354,7 +356,8 @@ void SectionProblem::set_conservative_volume_rate(double dt) {
 }
 
 double SectionProblem::dirichlet_value(const Dirichlet& d, double t) const {
-  if (d.field >= 0 && d.field < 2 && dirichlet_u_) return dirichlet_u_(node_position(d.node), t)(d.field);
+  if (d.field >= 0 && d.field < 2 && dirichlet_u_)
+    return dirichlet_u_(node_position(d.node), t)(d.field);
   if (d.field == 2 && dirichlet_p_) return dirichlet_p_(node_position(d.node), t);
   return d.value * curve_value(d.curve, t);
 }
@@ -362,7 +365,8 @@ double SectionProblem::dirichlet_value(const Dirichlet& d, double t) const {
 double SectionProblem::dirichlet_rate(const Dirichlet& d, double t) const {
   const Vec3 X = node_position(d.node);
   if (d.field >= 0 && d.field < 2 && dirichlet_u_)
-    return (dirichlet_u_rate_ ? dirichlet_u_rate_(X, t) : central_rate(dirichlet_u_, X, t))(d.field);
+    return (dirichlet_u_rate_ ? dirichlet_u_rate_(X, t)
+                              : central_rate(dirichlet_u_, X, t))(d.field);
   if (d.field == 2 && dirichlet_p_)
     return dirichlet_p_rate_ ? dirichlet_p_rate_(X, t) : central_rate(dirichlet_p_, X, t);
   return d.curve ? d.value * d.curve->slope(t) : 0.0;
@@ -524,11 +528,10 @@ std::vector<std::array<double, 3>> SectionProblem::reactions(
   return out;
 }
 
-BiphasicProblem::FluidRates SectionProblem::fluid_rates(double t, const double* y,
-                                                        const double* ydot) {
+FluidRates SectionProblem::fluid_rates(double t, const double* y, const double* ydot) {
   std::vector<double> F(static_cast<std::size_t>(size()));
   assemble(t, y, ydot, F.data());
-  BiphasicProblem::FluidRates out;
+  FluidRates out;
   for (const Dirichlet& d : dirichlet_)
     if (d.dof >= num_u()) out.drained -= F[d.dof];
   for (const NodalLoad& l : nodal_loads_) {

@@ -10,12 +10,12 @@ double VolumeBalanceRecord::relative_imbalance() const {
   return std::abs(volume_change + outflow_integrated - source_integrated) / std::abs(volume_change);
 }
 
-VolumeBalance::VolumeBalance(BiphasicProblem& problem, const std::vector<double>& y0)
+VolumeBalance::VolumeBalance(BiphasicModel& problem, const std::vector<double>& y0)
     : problem_(problem), initial_(problem.volume_change(y0.data())) {}
 
 void VolumeBalance::add_step(double t, double dt, const std::vector<double>& y,
                              const std::vector<double>& ydot) {
-  const BiphasicProblem::FluidRates q = problem_.fluid_rates(t, y.data(), ydot.data());
+  const FluidRates q = problem_.fluid_rates(t, y.data(), ydot.data());
   record_.outflow_integrated += dt * (q.drained + q.prescribed);
   record_.source_integrated += dt * q.source;
   record_.volume_change = problem_.volume_change(y.data()) - initial_;

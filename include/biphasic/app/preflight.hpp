@@ -7,6 +7,7 @@
 
 #include "biphasic/io/config.hpp"
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic {
 
@@ -30,6 +31,19 @@ Mesh build_case_mesh(const Config& config, const std::string& output_dir,
 ///    part of the mesh (unless constraints.allow_free_rigid_modes).
 /// Returns notes for the log (the opt-ins that were used and what they let through).
 std::vector<std::string> preflight(const Config& config, const Mesh& mesh);
+
+/// The section mesh of a two-dimensional model: generated ([mesh.section]) or read from
+/// mesh.file, with failures reported as CaseError naming the key.
+SectionMesh build_case_section_mesh(const Config& config);
+
+/// The checks before the first step of a two-dimensional model, throwing CaseError listing
+/// every problem: every boundary[i].name is a curve of the section mesh (or, for a
+/// displacement condition, a physical point); the displacement and symmetry conditions hold
+/// the rigid-body modes (plane strain: translations in x and y and the rotation about z;
+/// axisymmetric: the translation along the axis, y) unless constraints.allow_free_rigid_modes;
+/// the problem can be set up (conflicting conditions on one unknown, symmetry on a curve that is
+/// not straight and axis-aligned, and the like, named by the condition).
+std::vector<std::string> preflight_section(const Config& config, const SectionMesh& mesh);
 
 /// `biphasic check`: builds the mesh as a run would (generated meshes through the mesh cache,
 /// no .msh written), runs preflight on it and builds the probes. Returns preflight's notes,

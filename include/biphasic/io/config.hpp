@@ -11,6 +11,7 @@
 #include "biphasic/linsolve/linear_solver_config.hpp"
 #include "biphasic/material/material_config.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 #include "biphasic/physics/stabilisation/stabilisation_config.hpp"
 #include "biphasic/time/time_config.hpp"
 
@@ -27,13 +28,25 @@ struct LoadCurve {
   std::vector<double> kinks() const;
 };
 
-enum class MeshSource { QuarterCylinder, Column, SphereOctant, File };
+enum class MeshSource { QuarterCylinder, Column, SphereOctant, Section, File };
+
+/// The kinematics of the model (docs/two_dimensional_models.md): the three-dimensional body on
+/// a tetrahedral mesh, or a two-dimensional section on a triangle mesh.
+enum class ModelKind {
+  ThreeDimensional,  ///< tetrahedra, u = (u_x, u_y, u_z)
+  PlaneStrain,       ///< triangles in (x, y), u_z = 0, per mm of thickness
+  Axisymmetric,      ///< triangles in (r, z) = (x, y), u_θ = 0, over the full circle
+};
+
+/// Whether the model is two-dimensional (a section mesh).
+inline bool is_two_dimensional(ModelKind m) { return m != ModelKind::ThreeDimensional; }
 
 struct MeshConfig {
   MeshSource source = MeshSource::QuarterCylinder;
   QuarterCylinderSpec cylinder;  ///< also holds write_msh for every gmsh-generated source
   ColumnSpec column;
   SphereOctantSpec sphere_octant;
+  SectionRectangleSpec section;         ///< mesh.source = "section" ([mesh.section])
   std::string file;                     ///< .msh path (resolved relative to the case file's folder)
   bool ignore_memory_estimate = false;  ///< run even if the size guard expects too little memory
 };
@@ -125,6 +138,7 @@ struct ConstraintsConfig {
 
 /// Case-file names of enumerators ("displacement", "metis", …).
 std::string to_string(BcType type);
+std::string to_string(ModelKind model);
 std::string to_string(Ordering ordering);
 std::string to_string(FactorPrecision precision);
 std::string to_string(FieldQuantity quantity);
@@ -132,6 +146,7 @@ std::string to_string(FieldQuantity quantity);
 struct Config {
   std::string case_file;  ///< path of the case file read
   std::string title;
+  ModelKind model = ModelKind::ThreeDimensional;
   MeshConfig mesh;
   MaterialConfig material;
   std::vector<RegionConfig> regions;  ///< [[region]] entries, in file order

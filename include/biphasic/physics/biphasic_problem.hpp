@@ -16,6 +16,7 @@
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
+#include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
@@ -25,7 +26,7 @@ using ScalarField = std::function<double(const Vec3& X, double t)>;
 /// A vector field of the reference position X [mm] and time t [s].
 using VectorField = std::function<Vec3(const Vec3& X, double t)>;
 
-class BiphasicProblem final : public SemidiscreteSystem {
+class BiphasicProblem final : public BiphasicModel {
  public:
   /// Resolves boundary conditions by name, builds the geometry cache and the pattern, and
   /// takes the body force and fluid source formulas of config.loads (checked to be finite at
@@ -75,7 +76,7 @@ class BiphasicProblem final : public SemidiscreteSystem {
   const std::vector<PointGeometry>& point_geometry(Index e) const { return geometry_[e]; }
   /// The material laws of element e: those of its mesh region's [[region]] entry, or of
   /// [material] (docs/model_layer.md, *Regions*).
-  const MaterialLaws& laws_of(Index e) const {
+  const MaterialLaws& laws_of(Index e) const override {
     return laws_[element_law_.empty() ? 0 : static_cast<std::size_t>(element_law_[e])];
   }
   /// The distinct law sets in use (one per mesh region with its own material, [material] first).
@@ -94,34 +95,28 @@ class BiphasicProblem final : public SemidiscreteSystem {
   /// by reaction_labels(). Throws std::invalid_argument for a name with no displacement or
   /// symmetry condition.
   std::vector<std::array<double, 3>> reactions(const std::vector<std::string>& boundaries, double t,
-                                               const double* y, const double* ydot);
+                                               const double* y, const double* ydot) override;
   /// Label of the total in reactions().
   static constexpr const char* kReactionTotal = "total";
   /// The labels of reactions()' entries: the names, then kReactionTotal if there are two or
   /// more.
   static std::vector<std::string> reaction_labels(const std::vector<std::string>& boundaries);
 
-  /// Fluid volume rates at (t, y, ẏ) [mm³/s] (docs/formulation.md, *Fluid-volume balance*).
-  struct FluidRates {
-    /// −Σ of the mass residual (element terms and loads) on the pressure-Dirichlet rows: the
-    /// fluid leaving through the drained faces (the negative fluid reaction).
-    double drained = 0.0;
-    double prescribed = 0.0;  ///< ∫Γq q̄ dA of the flux conditions (outward)
-    double source = 0.0;      ///< ∫Ω₀ s dX of the fluid source
-  };
+  using FluidRates = biphasic::FluidRates;
   /// Summing all mass rows (Σ g = 1 removes the Darcy term): at a converged state (free mass
   /// rows ≈ 0) ∫Ω₀ J̇ dX = source − drained − prescribed.
-  FluidRates fluid_rates(double t, const double* y, const double* ydot);
+  FluidRates fluid_rates(double t, const double* y, const double* ydot) override;
   /// ∫Ω₀ (J − 1) dX [mm³]: the body's volume change from the reference configuration, with
   /// the element quadrature rule.
-  double volume_change(const double* y) const;
+  double volume_change(const double* y) const override;
+  Index num_elements() const override { return static_cast<Index>(mesh_.tets.size()); }
 
   /// Sets the constrained entries of y to ḡ(t) and of ẏ to dḡ/dt (ẏ may be null).
   void apply_dirichlet(double t, double* y, double* ydot) const override;
   /// Load-curve kinks of every boundary condition (sorted, unique) [s].
   std::vector<double> breakpoints() const override;
   /// c_e = scale · h_e² / (4k) of element e (0 without GLS) [MPa s].
-  double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
+  double gls_coefficient(Index e) const override { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
   /// β = scale · h_e² / (4 H_A) of the flux perturbation (0 without it) [mm⁴ N⁻¹].
   double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
 

@@ -14,6 +14,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,13 +23,22 @@
 #include "biphasic/io/config.hpp"
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/mesh/section_mesh.hpp"
+#include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/section_element.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
 
-class SectionProblem final : public SemidiscreteSystem {
+/// The section model of a two-dimensional ModelKind; throws std::invalid_argument for the
+/// three-dimensional one.
+inline SectionModel section_model(ModelKind kind) {
+  if (kind == ModelKind::Axisymmetric) return SectionModel::Axisymmetric;
+  if (kind == ModelKind::PlaneStrain) return SectionModel::PlaneStrain;
+  throw std::invalid_argument("section_model: the three-dimensional model has no section");
+}
+
+class SectionProblem final : public BiphasicModel {
  public:
   /// Resolves the boundary conditions by name, builds the geometry and the pattern, and takes
   /// the body force and fluid source formulas of config.loads (of X = (x, y, 0) or (r, z, 0);
@@ -62,7 +72,7 @@ class SectionProblem final : public SemidiscreteSystem {
   /// The quadrature-point geometry of triangle e.
   const std::vector<SectionPointGeometry>& point_geometry(Index e) const { return geometry_[e]; }
   /// The material laws of triangle e (its region's [[region]] entry, or [material]).
-  const MaterialLaws& laws_of(Index e) const {
+  const MaterialLaws& laws_of(Index e) const override {
     return laws_[element_law_.empty() ? 0 : static_cast<std::size_t>(element_law_[e])];
   }
   /// The element kernel's output for triangle e at the global state.
@@ -75,13 +85,14 @@ class SectionProblem final : public SemidiscreteSystem {
   /// Axisymmetric: the force on the full circle [N] (the r component of a closed ring sums to
   /// zero physically; it is the net radial line load × 2πR). Plane strain: per mm [N/mm].
   std::vector<std::array<double, 3>> reactions(const std::vector<std::string>& boundaries, double t,
-                                               const double* y, const double* ydot);
+                                               const double* y, const double* ydot) override;
   /// Fluid rates as BiphasicProblem::fluid_rates.
-  BiphasicProblem::FluidRates fluid_rates(double t, const double* y, const double* ydot);
+  FluidRates fluid_rates(double t, const double* y, const double* ydot) override;
   /// ∫Ω₀ (J − 1) dX, the body's volume change [mm³] (per mm in plane strain).
-  double volume_change(const double* y) const;
+  double volume_change(const double* y) const override;
+  Index num_elements() const override { return static_cast<Index>(mesh_.triangles.size()); }
 
-  double gls_coefficient(Index e) const { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
+  double gls_coefficient(Index e) const override { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
   double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
   /// As BiphasicProblem::pressure_schur_term, with the P1 triangle mass matrices of the measure.
   void pressure_schur_term(double cj, double cj_gls, std::vector<PressureEntry>& out) const;

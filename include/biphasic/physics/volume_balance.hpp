@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/biphasic_model.hpp"
 
 namespace biphasic {
 
@@ -24,7 +24,7 @@ struct VolumeBalanceRecord {
 class VolumeBalance {
  public:
   /// Starts at the initial state y0 (ΔV measured from it).
-  VolumeBalance(BiphasicProblem& problem, const std::vector<double>& y0);
+  VolumeBalance(BiphasicModel& problem, const std::vector<double>& y0);
   /// Adds the backward-Euler step of length dt [s] ending at t with its converged y and
   /// ẏ = (y − yₙ)/Δt. Call before the problem's volume-rate setting changes for the next
   /// step: Q is the problem's own mass residual at (t, y, ẏ).
@@ -35,7 +35,7 @@ class VolumeBalance {
   const VolumeBalanceRecord& record() const { return record_; }
 
  private:
-  BiphasicProblem& problem_;
+  BiphasicModel& problem_;
   double initial_ = 0.0;  ///< ∫Ω₀ (J₀ − 1) dX [mm³]
   VolumeBalanceRecord record_;
 };
