@@ -383,8 +383,8 @@ ordering = "nd"
   EXPECT_TRUE(has_problem(
       problems, {"cases/x.toml: stabilisation.type = \"glss\": must be one of none, gls"}));
   EXPECT_TRUE(has_problem(problems, {"stabilisation.length = \"diameter\"", "circumradius"}));
-  EXPECT_TRUE(has_problem(
-      problems, {"mesh.source = \"generated\"", "quarter_cylinder, column, sphere_octant, file"}));
+  EXPECT_TRUE(has_problem(problems, {"mesh.source = \"generated\"",
+                                     "quarter_cylinder, column, sphere_octant, section, file"}));
   EXPECT_TRUE(has_problem(problems, {"mesh.grading_faces = [\"top\", \"topp\"]", "\"topp\"",
                                      "bottom, top, lateral, symmetry_x, symmetry_y"}));
   EXPECT_TRUE(has_problem(problems, {"linear_solver.ordering = \"nd\"", "amd, colamd, metis"}));
@@ -649,7 +649,9 @@ line_end = [0, 0, 4]
   }
   EXPECT_EQ(j["time"]["newton"].size(), 8u);
   EXPECT_EQ(j["time"]["newton"]["max_cutbacks"], 4);
-  EXPECT_EQ(j["mesh"].size(), 15u);  // twelve keys, [mesh.column], [mesh.sphere_octant]
+  // Thirteen keys, [mesh.column], [mesh.sphere_octant], [mesh.section].
+  EXPECT_EQ(j["mesh"].size(), 16u);
+  EXPECT_EQ(j["mesh"]["section"].size(), 6u);
   EXPECT_EQ(j["mesh"]["column"].size(), 10u);
   EXPECT_EQ(j["mesh"]["sphere_octant"].size(), 4u);
   EXPECT_EQ(j["output"]["reactions"], nlohmann::json::array());
