@@ -5,6 +5,8 @@
 
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/field_recovery.hpp"
+#include "biphasic/physics/section_field_recovery.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 
@@ -91,6 +93,27 @@ void FieldOutput::write(const BiphasicProblem& problem, double t, const std::vec
   std::vector<std::vector<double>> cells;
   if (!cell_quantities_.empty()) {
     CellFields fields = recover_cell_fields(problem, y.data());
+    for (FieldQuantity q : cell_quantities_) cells.push_back(take(fields, q));
+  }
+  writer_.write(t, u, p, cells);
+}
+
+SectionFieldOutput::SectionFieldOutput(const std::vector<FieldQuantity>& quantities,
+                                       const std::string& directory, const SectionMesh& mesh,
+                                       std::optional<double> keep_until)
+    : cell_quantities_(cell_quantities(quantities)),
+      writer_(keep_until
+                  ? FieldWriter(directory, "fields", mesh, *keep_until, field_layout(quantities))
+                  : FieldWriter(directory, "fields", mesh, field_layout(quantities))) {}
+
+void SectionFieldOutput::write(const SectionProblem& problem, double t,
+                               const std::vector<double>& y) {
+  const auto num_u = static_cast<std::ptrdiff_t>(problem.num_u());
+  const std::vector<double> u(y.begin(), y.begin() + num_u);  // 2 per node: the writer expands
+  const std::vector<double> p(y.begin() + num_u, y.end());
+  std::vector<std::vector<double>> cells;
+  if (!cell_quantities_.empty()) {
+    CellFields fields = recover_section_cell_fields(problem, y.data());
     for (FieldQuantity q : cell_quantities_) cells.push_back(take(fields, q));
   }
   writer_.write(t, u, p, cells);

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "biphasic/app/run.hpp"
 #include "biphasic/fe/shape_functions.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/io/field_writer.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
 
@@ -27,13 +30,15 @@ std::string point_text(const Point& x) {
 }
 
 /// Round-off allowance for points on the body's surface: 1e-6 of the mesh's extent [mm].
-double surface_tolerance(const PointLocator& locator) {
+template <class Locator>
+double surface_tolerance(const Locator& locator) {
   return 1e-6 * std::max(locator.diagonal(), 1.0);
 }
 
 /// A probe from a to b sampled as `points` asks (0: mesh nodes when the line runs along the
 /// mesh, else kDefaultProbePoints; n: n points); `where` prefixes errors.
-LineProbe sample_line(const Mesh& mesh, const PointLocator& locator, const Point& a, const Point& b,
+template <class AnyMesh, class Locator>
+LineProbe sample_line(const AnyMesh& mesh, const Locator& locator, const Point& a, const Point& b,
                       int points, const std::string& where) {
   if (points == 0) {
     // The tolerance of the node search is the one the probe line always had.
@@ -95,15 +100,83 @@ LineProbe interpolating_probe(const Mesh& mesh, const PointLocator& locator, con
   return LineProbe(a, b, std::move(samples), mesh.num_nodes(), mesh.num_vertices);
 }
 
-std::vector<Probe> build_probes(const Config& config, const Mesh& mesh) {
+LineProbe interpolating_probe(const SectionMesh& mesh, const SectionPointLocator& locator,
+                              const Point& a, const Point& b, int n, double tolerance) {
+  if (n < 2) throw std::invalid_argument("interpolating_probe: needs at least 2 points");
+  const double length = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  std::vector<ProbeSample> samples;
+  std::size_t outside = 0;
+  std::string first_outside;
+  for (int i = 0; i < n; ++i) {
+    const double f = static_cast<double>(i) / (n - 1);
+    ProbeSample sample;
+    sample.s = i == n - 1 ? length : f * length;
+    for (int d = 0; d < 3; ++d) sample.x[d] = i == n - 1 ? b[d] : a[d] + f * (b[d] - a[d]);
+    const Point2 x2{sample.x[0], sample.x[1]};
+    const std::optional<SectionPointLocation> loc = locator.locate(x2, tolerance);
+    if (!loc) {
+      if (outside++ == 0) {
+        first_outside = "point " + std::to_string(i + 1) + " of " + std::to_string(n) + " at " +
+                        point_text(sample.x) + " mm";
+        const auto near = locator.locate(x2, 0.01 * locator.diagonal());
+        if (near) first_outside += " (about " + number(near->distance_outside) + " mm outside)";
+      }
+      continue;
+    }
+    const Tri6& tri = mesh.triangles[static_cast<std::size_t>(loc->triangle)];
+    const Eigen::Matrix<double, 6, 1> N = tri6_values(loc->eta);
+    const Eigen::Vector3d L = tri3_values(loc->eta);
+    for (int k = 0; k < 6; ++k) sample.u_weights.emplace_back(tri[k], N(k));
+    for (int k = 0; k < 3; ++k) sample.p_weights.emplace_back(tri[k], L(k));
+    samples.push_back(std::move(sample));
+  }
+  if (outside > 0) {
+    throw std::out_of_range(
+        first_outside + " lies outside the section" +
+        (outside > 1 ? " (" + std::to_string(outside) + " of the points do)" : std::string{}) +
+        "; the section is the mesh, its curved edges as the quadratic triangles describe them "
+        "(move points on a curved boundary inward)");
+  }
+  return LineProbe(a, b, std::move(samples), mesh.num_nodes(), mesh.num_vertices);
+}
+
+namespace {
+
+template <class AnyMesh>
+struct LocatorOf {
+  using type = PointLocator;
+};
+template <>
+struct LocatorOf<SectionMesh> {
+  using type = SectionPointLocator;
+};
+
+/// build_probes on either kind of mesh; a section's probe points must have z = 0.
+template <class AnyMesh>
+std::vector<Probe> build_probes_on(const Config& config, const AnyMesh& mesh) {
+  constexpr bool section = std::is_same_v<AnyMesh, SectionMesh>;
   const OutputConfig& out = config.output;
   if (!out.line && out.probes.empty()) return {};
-  const PointLocator locator(mesh);
+  const typename LocatorOf<AnyMesh>::type locator(mesh);
   const std::string source = config.case_file.empty() ? std::string{} : config.case_file + ": ";
   std::vector<Probe> probes;
   std::vector<std::string> problems;
   auto add = [&](std::string name, std::string key, std::string file, const Point& a,
-                 const Point& b, int points, bool measured) {
+                 const Point& b, int points, bool measured, const std::string& start_key,
+                 const std::string& end_key) {
+    if constexpr (section) {
+      bool in_plane = true;
+      for (const auto& [x, x_key] : {std::pair{a, start_key}, std::pair{b, end_key}}) {
+        if (x[2] != 0.0) {
+          in_plane = false;
+          problems.push_back(source + key + ": " + x_key + " = " + point_text(x) +
+                             " mm has z = " + number(x[2]) +
+                             "; a probe of a two-dimensional model lies in its section, z = 0 "
+                             "(points (x, y, 0) or (r, z, 0))");
+        }
+      }
+      if (!in_plane) return;
+    }
     try {
       probes.push_back(Probe{std::move(name), key, std::move(file),
                              sample_line(mesh, locator, a, b, points, source + key), measured});
@@ -113,19 +186,20 @@ std::vector<Probe> build_probes(const Config& config, const Mesh& mesh) {
   };
   if (out.line)
     add("line", "output.line_start .. output.line_end", "line.csv", out.line_start, out.line_end,
-        out.line_points, true);
+        out.line_points, true, "output.line_start", "output.line_end");
   for (std::size_t i = 0; i < out.probes.size(); ++i) {
     const ProbeConfig& p = out.probes[i];
-    add(p.name, "probe[" + std::to_string(i) + "] \"" + p.name + "\"", "probe_" + p.name + ".csv",
-        p.start, p.end, p.points, false);
+    const std::string index = "probe[" + std::to_string(i) + "]";
+    add(p.name, index + " \"" + p.name + "\"", "probe_" + p.name + ".csv", p.start, p.end, p.points,
+        false, index + ".start", index + ".end");
   }
   if (!problems.empty()) throw CaseError(std::move(problems));
   return probes;
 }
 
-std::vector<std::string> check_probes(const Config& config, const Mesh& mesh) {
+std::vector<std::string> describe_probes(const std::vector<Probe>& probes) {
   std::vector<std::string> lines;
-  for (const Probe& probe : build_probes(config, mesh)) {
+  for (const Probe& probe : probes) {
     const LineProbe& s = probe.samples;
     lines.push_back(
         (probe.measured ? std::string("probe line") : "probe \"" + probe.name + "\"") + " from " +
@@ -135,7 +209,25 @@ std::vector<std::string> check_probes(const Config& config, const Mesh& mesh) {
   return lines;
 }
 
-ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, const BiphasicProblem& problem,
+}  // namespace
+
+std::vector<Probe> build_probes(const Config& config, const Mesh& mesh) {
+  return build_probes_on(config, mesh);
+}
+
+std::vector<std::string> check_probes(const Config& config, const Mesh& mesh) {
+  return describe_probes(build_probes(config, mesh));
+}
+
+std::vector<Probe> build_section_probes(const Config& config, const SectionMesh& mesh) {
+  return build_probes_on(config, mesh);
+}
+
+std::vector<std::string> check_section_probes(const Config& config, const SectionMesh& mesh) {
+  return describe_probes(build_section_probes(config, mesh));
+}
+
+ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, const SemidiscreteSystem& problem,
                              const std::string& output_dir, std::optional<double> resume_t)
     : probes_(std::move(probes)) {
   for (const Probe& probe : probes_) {

@@ -19,33 +19,38 @@ namespace biphasic {
 
 static_assert(std::is_same_v<hid_t, std::int64_t>, "FieldWriter stores hid_t as int64");
 
-std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh) {
-  const Index nv = mesh.num_vertices;
-  const Index nn = mesh.num_nodes();
+namespace {
+
+/// edge_node_vertices of cells with `corners` vertices and the edges `table` (local node
+/// corners + k on edge table[k]); `what` names a cell in messages.
+template <class Cells, class Table>
+std::vector<std::array<Index, 2>> edges_of_cells(const Cells& cells, const Table& table,
+                                                 int corners, Index nv, Index nn,
+                                                 const std::string& what) {
   if (nv < 0 || nv > nn) {
     throw std::runtime_error("mesh: num_vertices = " + std::to_string(nv) + " with " +
                              std::to_string(nn) + " nodes");
   }
   constexpr Index kUnset = -1;
   std::vector<std::array<Index, 2>> edges(static_cast<std::size_t>(nn - nv), {kUnset, kUnset});
-  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
-    const Tet10& tet = mesh.tets[e];
-    for (int c = 0; c < 4; ++c) {
-      if (tet[c] < 0 || tet[c] >= nv) {
-        throw std::runtime_error("mesh: tetrahedron " + std::to_string(e) + " has corner node " +
-                                 std::to_string(tet[c]) + ", not a vertex (0.." +
+  for (std::size_t e = 0; e < cells.size(); ++e) {
+    const auto& cell = cells[e];
+    for (int c = 0; c < corners; ++c) {
+      if (cell[c] < 0 || cell[c] >= nv) {
+        throw std::runtime_error("mesh: " + what + " " + std::to_string(e) + " has corner node " +
+                                 std::to_string(cell[c]) + ", not a vertex (0.." +
                                  std::to_string(nv - 1) + ")");
       }
     }
-    for (std::size_t k = 0; k < kTetEdges.size(); ++k) {
-      const Index n = tet[4 + k];
+    for (std::size_t k = 0; k < table.size(); ++k) {
+      const Index n = cell[static_cast<std::size_t>(corners) + k];
       if (n < nv || n >= nn) {
-        throw std::runtime_error("mesh: tetrahedron " + std::to_string(e) + " has edge node " +
+        throw std::runtime_error("mesh: " + what + " " + std::to_string(e) + " has edge node " +
                                  std::to_string(n) + ", not an edge node (" + std::to_string(nv) +
                                  ".." + std::to_string(nn - 1) + ")");
       }
-      Index v0 = tet[kTetEdges[k][0]];
-      Index v1 = tet[kTetEdges[k][1]];
+      Index v0 = cell[table[k][0]];
+      Index v1 = cell[table[k][1]];
       if (v1 < v0) std::swap(v0, v1);
       auto& slot = edges[static_cast<std::size_t>(n - nv)];
       if (slot[0] == kUnset) {
@@ -54,17 +59,39 @@ std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh) {
         throw std::runtime_error("mesh: edge node " + std::to_string(n) + " sits on edge (" +
                                  std::to_string(slot[0]) + "," + std::to_string(slot[1]) +
                                  ") and on edge (" + std::to_string(v0) + "," + std::to_string(v1) +
-                                 ") in tetrahedron " + std::to_string(e));
+                                 ") in " + what + " " + std::to_string(e));
       }
     }
   }
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (edges[k][0] == kUnset) {
       throw std::runtime_error("mesh: edge node " + std::to_string(nv + static_cast<Index>(k)) +
-                               " belongs to no tetrahedron");
+                               " belongs to no " + what);
     }
   }
   return edges;
+}
+
+}  // namespace
+
+std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh) {
+  return edges_of_cells(mesh.tets, kTetEdges, 4, mesh.num_vertices, mesh.num_nodes(),
+                        "tetrahedron");
+}
+
+std::vector<std::array<Index, 2>> edge_node_vertices(const SectionMesh& mesh) {
+  return edges_of_cells(mesh.triangles, kTriEdges, 3, mesh.num_vertices, mesh.num_nodes(),
+                        "triangle");
+}
+
+std::vector<double> displacement_in_3d(const std::vector<double>& u2) {
+  const std::size_t n = u2.size() / 2;
+  std::vector<double> u(3 * n, 0.0);
+  for (std::size_t a = 0; a < n; ++a) {
+    u[3 * a] = u2[2 * a];
+    u[3 * a + 1] = u2[2 * a + 1];
+  }
+  return u;
 }
 
 std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& edges,
@@ -263,6 +290,35 @@ void check_layout(const FieldLayout& layout) {
   }
 }
 
+/// What the files hold of a mesh: node coordinates as xyz, the cells' nodes, the cell shape.
+struct MeshArrays {
+  std::vector<double> xyz;
+  std::vector<std::int64_t> topology;
+  Index num_cells = 0;
+  int nodes_per_cell = 10;
+  int u_components = 3;
+  const char* topology_type = "Tetrahedron_10";
+
+  explicit MeshArrays(const Mesh& mesh) : num_cells(static_cast<Index>(mesh.tets.size())) {
+    xyz.reserve(3 * mesh.nodes.size());
+    for (const Point& x : mesh.nodes) xyz.insert(xyz.end(), x.begin(), x.end());
+    topology.reserve(10 * mesh.tets.size());
+    for (const Tet10& tet : mesh.tets) topology.insert(topology.end(), tet.begin(), tet.end());
+  }
+  /// A section at z = 0; Triangle_6 numbers the nodes as Tri6 does (corners, then the
+  /// midsides of edges 01, 12, 20).
+  explicit MeshArrays(const SectionMesh& mesh)
+      : num_cells(static_cast<Index>(mesh.triangles.size())),
+        nodes_per_cell(6),
+        u_components(2),
+        topology_type("Triangle_6") {
+    xyz.reserve(3 * mesh.nodes.size());
+    for (const Point2& x : mesh.nodes) xyz.insert(xyz.end(), {x[0], x[1], 0.0});
+    topology.reserve(6 * mesh.triangles.size());
+    for (const Tri6& tri : mesh.triangles) topology.insert(topology.end(), tri.begin(), tri.end());
+  }
+};
+
 }  // namespace
 
 std::vector<std::string> FieldWriter::groups() const {
@@ -276,13 +332,16 @@ std::vector<std::string> FieldWriter::groups() const {
   return out;
 }
 
-FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
-                         FieldLayout layout)
-    : stem_(stem),
-      num_nodes_(mesh.num_nodes()),
-      num_vertices_(mesh.num_vertices),
-      num_tets_(static_cast<Index>(mesh.tets.size())),
-      layout_(std::move(layout)) {
+template <class AnyMesh>
+void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
+  const std::string& stem = stem_;
+  const MeshArrays arrays(mesh);
+  num_nodes_ = mesh.num_nodes();
+  num_vertices_ = mesh.num_vertices;
+  num_cells_ = arrays.num_cells;
+  nodes_per_cell_ = arrays.nodes_per_cell;
+  u_components_ = arrays.u_components;
+  topology_type_ = arrays.topology_type;
   check_layout(layout_);
   namespace fs = std::filesystem;
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
@@ -291,7 +350,7 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
   if (stem.empty() || stem.find('/') != std::string::npos) {
     throw std::runtime_error("FieldWriter: invalid file stem '" + stem + "' in " + directory);
   }
-  if (num_tets_ == 0) throw std::runtime_error("FieldWriter: " + h5_path_ + ": mesh has no cells");
+  if (num_cells_ == 0) throw std::runtime_error("FieldWriter: " + h5_path_ + ": mesh has no cells");
   edges_ = edge_node_vertices(mesh);
 
   std::error_code ec;
@@ -318,19 +377,14 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
     h5.create_group("/fields");
     for (const std::string& group : groups()) h5.create_group("/fields/" + group);
 
-    std::vector<double> xyz;
-    xyz.reserve(3 * mesh.nodes.size());
-    for (const Point& x : mesh.nodes) xyz.insert(xyz.end(), x.begin(), x.end());
     {
       H5Id set = h5.write_dataset("/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                                  {static_cast<hsize_t>(num_nodes_), 3}, xyz.data());
+                                  {static_cast<hsize_t>(num_nodes_), 3}, arrays.xyz.data());
       h5.write_attribute(set.get(), "/mesh/coordinates", "units", "mm");
     }
-    std::vector<std::int64_t> topo;
-    topo.reserve(10 * mesh.tets.size());
-    for (const Tet10& tet : mesh.tets) topo.insert(topo.end(), tet.begin(), tet.end());
     h5.write_dataset("/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64,
-                     {static_cast<hsize_t>(num_tets_), 10}, topo.data());
+                     {static_cast<hsize_t>(num_cells_), static_cast<hsize_t>(nodes_per_cell_)},
+                     arrays.topology.data());
     const std::int64_t nv = num_vertices_;
     h5.write_dataset("/mesh/vertex_count", H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &nv);
 
@@ -356,13 +410,16 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
   }
 }
 
-FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
-                         double keep_until, FieldLayout layout)
-    : stem_(stem),
-      num_nodes_(mesh.num_nodes()),
-      num_vertices_(mesh.num_vertices),
-      num_tets_(static_cast<Index>(mesh.tets.size())),
-      layout_(std::move(layout)) {
+template <class AnyMesh>
+void FieldWriter::reopen(const std::string& directory, const AnyMesh& mesh, double keep_until) {
+  const std::string& stem = stem_;
+  const MeshArrays arrays(mesh);
+  num_nodes_ = mesh.num_nodes();
+  num_vertices_ = mesh.num_vertices;
+  num_cells_ = arrays.num_cells;
+  nodes_per_cell_ = arrays.nodes_per_cell;
+  u_components_ = arrays.u_components;
+  topology_type_ = arrays.topology_type;
   check_layout(layout_);
   namespace fs = std::filesystem;
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
@@ -383,6 +440,14 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
       if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) != 2 ||
           dims[0] != static_cast<hsize_t>(num_nodes_)) {
         h5.fail("holds another mesh (expected " + std::to_string(num_nodes_) + " nodes)");
+      }
+      H5Id topo(H5Dopen2(file_, "/mesh/topology", H5P_DEFAULT), H5Dclose);
+      H5Id topo_space(topo.valid() ? H5Dget_space(topo.get()) : -1, H5Sclose);
+      if (!topo_space.valid() || H5Sget_simple_extent_dims(topo_space.get(), dims, nullptr) != 2 ||
+          dims[0] != static_cast<hsize_t>(num_cells_) ||
+          dims[1] != static_cast<hsize_t>(nodes_per_cell_)) {
+        h5.fail("holds another mesh (expected " + std::to_string(num_cells_) + " " +
+                topology_type_ + " cells)");
       }
     }
     H5Id set(H5Dopen2(file_, kTimes, H5P_DEFAULT), H5Dclose);
@@ -425,6 +490,30 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, 
   }
 }
 
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         FieldLayout layout)
+    : stem_(stem), layout_(std::move(layout)) {
+  create(directory, mesh);
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         double keep_until, FieldLayout layout)
+    : stem_(stem), layout_(std::move(layout)) {
+  reopen(directory, mesh, keep_until);
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem,
+                         const SectionMesh& mesh, FieldLayout layout)
+    : stem_(stem), layout_(std::move(layout)) {
+  create(directory, mesh);
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem,
+                         const SectionMesh& mesh, double keep_until, FieldLayout layout)
+    : stem_(stem), layout_(std::move(layout)) {
+  reopen(directory, mesh, keep_until);
+}
+
 FieldWriter::~FieldWriter() {
   if (file_ >= 0) H5Fclose(file_);
 }
@@ -435,10 +524,12 @@ void FieldWriter::write(double t, const std::vector<double>& u,
   const H5File h5(file_, h5_path_);
   const auto nn = static_cast<std::size_t>(num_nodes_);
   const auto nv = static_cast<std::size_t>(num_vertices_);
-  const auto ne = static_cast<std::size_t>(num_tets_);
-  if (layout_.displacement && u.size() != 3 * nn) {
-    h5.fail("displacement has " + std::to_string(u.size()) + " entries, expected 3 x " +
-            std::to_string(nn) + " nodes = " + std::to_string(3 * nn));
+  const auto ne = static_cast<std::size_t>(num_cells_);
+  const auto nu = static_cast<std::size_t>(u_components_);
+  if (layout_.displacement && u.size() != nu * nn) {
+    h5.fail("displacement has " + std::to_string(u.size()) + " entries, expected " +
+            std::to_string(nu) + " x " + std::to_string(nn) +
+            " nodes = " + std::to_string(nu * nn));
   }
   if (layout_.pressure && p_vertices.size() != nv) {
     h5.fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
@@ -467,7 +558,14 @@ void FieldWriter::write(double t, const std::vector<double>& u,
     h5.write_attribute(set.get(), name, "time", t);
     h5.write_attribute(set.get(), name, "units", units);
   };
-  if (layout_.displacement) put("displacement", {nn, 3}, u.data(), "mm");
+  if (layout_.displacement) {
+    if (u_components_ == 3) {
+      put("displacement", {nn, 3}, u.data(), "mm");
+    } else {
+      const std::vector<double> u3 = displacement_in_3d(u);
+      put("displacement", {nn, 3}, u3.data(), "mm");
+    }
+  }
   if (layout_.pressure) {
     const std::vector<double> p_nodes = pressure_at_nodes(edges_, p_vertices);
     put("pressure", {nn}, p_nodes.data(), "MPa");
@@ -507,7 +605,8 @@ void FieldWriter::write(double t, const std::vector<double>& u,
 void FieldWriter::write_xdmf() const {
   const std::string h5_name = xml_escape(stem_ + ".h5");
   const std::string n = std::to_string(num_nodes_);
-  const std::string e = std::to_string(num_tets_);
+  const std::string e = std::to_string(num_cells_);
+  const std::string per_cell = " " + std::to_string(nodes_per_cell_);
   const auto item = [&](const std::string& dims, const char* type, int precision,
                         const std::string& path) {
     return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"" +
@@ -524,8 +623,9 @@ void FieldWriter::write_xdmf() const {
     const std::string step = std::to_string(i);
     x << "      <Grid Name=\"step_" << step << "\" GridType=\"Uniform\">\n"
       << "        <Time Value=\"" << fmt_double(times_[i]) << "\"/>\n"
-      << "        <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"" << e << "\">\n"
-      << "          " << item(e + " 10", "Int", 8, "/mesh/topology") << "\n"
+      << "        <Topology TopologyType=\"" << topology_type_ << "\" NumberOfElements=\"" << e
+      << "\">\n"
+      << "          " << item(e + per_cell, "Int", 8, "/mesh/topology") << "\n"
       << "        </Topology>\n"
       << "        <Geometry GeometryType=\"XYZ\">\n"
       << "          " << item(n + " 3", "Float", 8, "/mesh/coordinates") << "\n"

@@ -41,6 +41,27 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
       num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
       at_nodes_(true) {
+  take_nodes_on_segment(mesh.nodes, edge_node_vertices(mesh));
+}
+
+LineProbe::LineProbe(const SectionMesh& mesh, Point a, Point b, double tolerance)
+    : a_(a),
+      b_(b),
+      tolerance_(tolerance),
+      num_nodes_(mesh.num_nodes()),
+      num_vertices_(mesh.num_vertices),
+      at_nodes_(true) {
+  std::vector<Point> nodes;
+  nodes.reserve(mesh.nodes.size());
+  for (const Point2& x : mesh.nodes) nodes.push_back({x[0], x[1], 0.0});
+  take_nodes_on_segment(nodes, edge_node_vertices(mesh));
+}
+
+void LineProbe::take_nodes_on_segment(const std::vector<Point>& nodes,
+                                      const std::vector<std::array<Index, 2>>& edges) {
+  const Point a = a_;
+  const Point b = b_;
+  const double tolerance = tolerance_;
   const std::string where = "LineProbe from " + fmt_point(a) + " to " + fmt_point(b) +
                             " with tolerance " + fmt_double(tolerance) + " mm";
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
@@ -51,7 +72,6 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
   if (!(length > 0.0) || !std::isfinite(length)) {
     throw std::runtime_error(where + ": end points must be distinct and finite");
   }
-  const std::vector<std::array<Index, 2>> edges = edge_node_vertices(mesh);
 
   struct Hit {
     double s;
@@ -60,7 +80,7 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
   std::vector<Hit> hits;
   Index vertex_hits = 0;
   for (Index n = 0; n < num_nodes_; ++n) {
-    const Point& x = mesh.nodes[static_cast<std::size_t>(n)];
+    const Point& x = nodes[static_cast<std::size_t>(n)];
     const Point ax = sub(x, a);
     const double s = dot(ax, ab) / length;
     const double s_clamped = std::clamp(s, 0.0, length);
@@ -83,7 +103,7 @@ LineProbe::LineProbe(const Mesh& mesh, Point a, Point b, double tolerance)
   for (const Hit& h : hits) {
     ProbeSample sample;
     sample.s = h.s;
-    sample.x = mesh.nodes[static_cast<std::size_t>(h.node)];
+    sample.x = nodes[static_cast<std::size_t>(h.node)];
     sample.u_weights = {{h.node, 1.0}};
     if (h.node < num_vertices_) {
       sample.p_weights = {{h.node, 1.0}};
@@ -186,19 +206,23 @@ std::array<double, 3> LineProbe::displacement(const std::vector<double>& u, std:
   return {weighted_sum(w, u, 3, 0), weighted_sum(w, u, 3, 1), weighted_sum(w, u, 3, 2)};
 }
 
-bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh) {
+namespace {
+
+/// runs_along_mesh over any list of elements (each a list of node indices).
+template <class Elements>
+bool runs_along_elements(const LineProbe& probe, Index num_nodes, const Elements& elements) {
   if (!probe.at_mesh_nodes() || probe.size() < 2) return false;
   const Point ab = sub(probe.b(), probe.a());
   const double length = std::sqrt(dot(ab, ab));
   const double tol = probe.tolerance();
   if (std::abs(probe.s().front()) > tol || std::abs(probe.s().back() - length) > tol) return false;
   // Elements of each probe node, then a common one for every consecutive pair.
-  std::vector<std::size_t> sample_of(static_cast<std::size_t>(mesh.num_nodes()), SIZE_MAX);
+  std::vector<std::size_t> sample_of(static_cast<std::size_t>(num_nodes), SIZE_MAX);
   for (std::size_t i = 0; i < probe.size(); ++i)
     sample_of[static_cast<std::size_t>(probe.node(i))] = i;
   std::vector<std::vector<Index>> tets_of(probe.size());
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (Index n : mesh.tets[t]) {
+  for (std::size_t t = 0; t < elements.size(); ++t) {
+    for (Index n : elements[t]) {
       const std::size_t i = sample_of[static_cast<std::size_t>(n)];
       if (i != SIZE_MAX) tets_of[i].push_back(static_cast<Index>(t));
     }
@@ -212,6 +236,16 @@ bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh) {
     if (common.empty()) return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh) {
+  return runs_along_elements(probe, mesh.num_nodes(), mesh.tets);
+}
+
+bool runs_along_mesh(const LineProbe& probe, const SectionMesh& mesh) {
+  return runs_along_elements(probe, mesh.num_nodes(), mesh.triangles);
 }
 
 double interpolate_on_line(const std::vector<double>& s, const std::vector<double>& f,

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "biphasic/io/line_probe.hpp"
-#include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
 
@@ -60,7 +60,7 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
   return m;
 }
 
-DrainedEnds drained_ends(const LineProbe& probe, const BiphasicProblem& problem) {
+DrainedEnds drained_ends(const LineProbe& probe, const SemidiscreteSystem& problem) {
   // Weights below this are round-off (a point on an element face has the opposite vertex's
   // weight ~1e-16, not 0).
   constexpr double kNegligible = 1e-9;

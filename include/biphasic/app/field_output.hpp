@@ -12,6 +12,7 @@
 namespace biphasic {
 
 class BiphasicProblem;
+class SectionProblem;
 
 /// The writer's layout for `quantities`: displacement and pressure as nodal fields, the others
 /// as cell fields named as in the case file, in FieldQuantity order.
@@ -32,6 +33,25 @@ class FieldOutput {
 
  private:
   std::vector<FieldQuantity> cell_quantities_;  ///< in the layout's order
+  FieldWriter writer_;
+};
+
+/// The field output of a two-dimensional model: the same files and quantities as FieldOutput
+/// on the section mesh (Triangle_6 cells at z = 0, displacement with third component 0,
+/// tensors' (2,2) entry σ_zz or the hoop σ_θθ; docs/output_fields.md).
+class SectionFieldOutput {
+ public:
+  /// New files in `directory`, or with `keep_until` [s] those of the run being restarted.
+  SectionFieldOutput(const std::vector<FieldQuantity>& quantities, const std::string& directory,
+                     const SectionMesh& mesh, std::optional<double> keep_until);
+
+  /// Appends the state `y` (u: 2 per node, then p per vertex) at time `t` [s].
+  void write(const SectionProblem& problem, double t, const std::vector<double>& y);
+
+  const FieldWriter& writer() const { return writer_; }
+
+ private:
+  std::vector<FieldQuantity> cell_quantities_;
   FieldWriter writer_;
 };
 

@@ -10,14 +10,16 @@
 #include <vector>
 
 #include "biphasic/fe/point_locator.hpp"
+#include "biphasic/fe/section_locator.hpp"
 #include "biphasic/io/config.hpp"
 #include "biphasic/io/line_probe.hpp"
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 #include "biphasic/study/measures.hpp"
 
 namespace biphasic {
 
-class BiphasicProblem;
+class SemidiscreteSystem;
 
 /// Points of an interpolated probe when `points = 0` and the line does not run along the mesh.
 inline constexpr int kDefaultProbePoints = 101;
@@ -39,6 +41,12 @@ struct Probe {
 LineProbe interpolating_probe(const Mesh& mesh, const PointLocator& locator, const Point& a,
                               const Point& b, int n, double tolerance);
 
+/// The same on a section mesh: a and b are (x, y, 0) or (r, z, 0) [mm]; each point is located
+/// in its triangle and weighted by the 6 P2 functions for u and the 3 P1 functions for p.
+/// Samples have positions (x, y, 0). Throws as the three-dimensional one.
+LineProbe interpolating_probe(const SectionMesh& mesh, const SectionPointLocator& locator,
+                              const Point& a, const Point& b, int n, double tolerance);
+
 /// The probes of `config` on `mesh`: the probe line when output.line is on, then every
 /// [[probe]]. A probe with points = 0 samples the mesh nodes on its line when the line runs
 /// along the mesh from end to end (runs_along_mesh), else kDefaultProbePoints points; with
@@ -51,14 +59,25 @@ std::vector<Probe> build_probes(const Config& config, const Mesh& mesh);
 /// CaseError.
 std::vector<std::string> check_probes(const Config& config, const Mesh& mesh);
 
+/// The probes of `config` on the section mesh of a two-dimensional model, as build_probes:
+/// points are given as (x, y, z) in the case file and must lie in the section plane, z = 0
+/// (else CaseError naming the key, e.g. output.line_start or probe[0].end); the samples'
+/// positions are (x, y, 0) or (r, z, 0). Their displacement() takes u with 3 entries per node:
+/// the model's unknowns expanded by displacement_in_3d (field_writer.hpp).
+std::vector<Probe> build_section_probes(const Config& config, const SectionMesh& mesh);
+
+/// check_probes for a section mesh.
+std::vector<std::string> check_section_probes(const Config& config, const SectionMesh& mesh);
+
 /// Writes every probe's CSV at each output and takes the oscillation measures on the probe
 /// line.
 class ProbeRecorder {
  public:
   /// Opens (truncates) each probe's CSV in `output_dir`; the drained ends of the probe line
-  /// come from the pressure conditions of `problem`. With `resume_t` (a restart), keeps each
-  /// file's rows up to that time [s] and appends after them.
-  ProbeRecorder(std::vector<Probe> probes, const BiphasicProblem& problem,
+  /// come from the pressure conditions of `problem` (a BiphasicProblem or a SectionProblem).
+  /// With `resume_t` (a restart), keeps each file's rows up to that time [s] and appends after
+  /// them.
+  ProbeRecorder(std::vector<Probe> probes, const SemidiscreteSystem& problem,
                 const std::string& output_dir, std::optional<double> resume_t = std::nullopt);
   ~ProbeRecorder();
 
@@ -67,7 +86,8 @@ class ProbeRecorder {
   void describe(nlohmann::json& summary) const;
 
   /// Writes a row per sample of every probe at time t [s]; returns the probe line's measures,
-  /// or nothing without a probe line. `u` has 3 entries per node, `p` one per vertex.
+  /// or nothing without a probe line. `u` has 3 entries per node (a section model's expanded
+  /// by displacement_in_3d), `p` one per vertex.
   std::optional<LineMeasures> write(double t, const std::vector<double>& u,
                                     const std::vector<double>& p);
 

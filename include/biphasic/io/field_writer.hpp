@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic {
 
@@ -16,13 +17,22 @@ namespace biphasic {
 /// edge node is shared by two different edges, or if an edge node belongs to no tetrahedron.
 std::vector<std::array<Index, 2>> edge_node_vertices(const Mesh& mesh);
 
+/// The same for a section mesh, built from its triangles (same checks, "triangle" in the
+/// messages).
+std::vector<std::array<Index, 2>> edge_node_vertices(const SectionMesh& mesh);
+
+/// A section displacement (2 entries per node, u[2n+c] [mm]) as a three-dimensional one (3 per
+/// node, the third 0): what the field files and the probes' displacement() take.
+std::vector<double> displacement_in_3d(const std::vector<double>& u2);
+
 /// The P1 pressure [MPa] given on the vertices evaluated at every P2 node: vertices keep their
 /// value, an edge node gets the mean of its edge's two vertices. `edges` comes from
 /// edge_node_vertices(); `p_vertices` must have one entry per vertex.
 std::vector<double> pressure_at_nodes(const std::vector<std::array<Index, 2>>& edges,
                                       const std::vector<double>& p_vertices);
 
-/// A field with one value, vector or symmetric tensor per tetrahedron (XDMF Center="Cell").
+/// A field with one value, vector or tensor per cell (tetrahedron or triangle; XDMF
+/// Center="Cell").
 struct CellFieldSpec {
   std::string name;  ///< HDF5 group /fields/<name> and XDMF attribute name
   /// 1 Scalar, 3 Vector (x, y, z), 6 Tensor6 (xx, xy, xz, yy, yz, zz), 9 Tensor (row by row:
@@ -40,14 +50,16 @@ struct FieldLayout {
 };
 
 /// Writes the fields of a run to `<directory>/<stem>.h5` and keeps `<directory>/<stem>.xdmf`
-/// (XDMF 3 temporal collection, Tetrahedron_10 cells) up to date.
+/// (XDMF 3 temporal collection, Tetrahedron_10 cells of a Mesh, Triangle_6 cells of a
+/// SectionMesh) up to date.
 ///
 /// HDF5 layout:
-///   /mesh/coordinates               N×3 double [mm]
-///   /mesh/topology                  E×10 int64 (Tetrahedron_10 node order)
+///   /mesh/coordinates               N×3 double [mm] (a section's nodes at z = 0)
+///   /mesh/topology                  E×10 int64 (Tetrahedron_10 node order), or E×6 for a
+///                                   section (Triangle_6: corners, then edges 01, 12, 20)
 ///   /mesh/vertex_count              scalar int64 (the first vertex_count nodes are corners)
 ///   /fields/times                   extensible 1-D double [s], one entry per output
-///   /fields/displacement/<i>        N×3 double [mm]                    (layout.displacement)
+///   /fields/displacement/<i>        N×3 double [mm] (section: third 0) (layout.displacement)
 ///   /fields/pressure/<i>            N double [MPa], P1 pressure evaluated on all P2 nodes
 ///   /fields/pressure_vertices/<i>   num_vertices double [MPa]          (both: layout.pressure)
 ///   /fields/<cell field>/<i>        E×components double (E double for a scalar)
@@ -69,13 +81,22 @@ class FieldWriter {
   /// std::runtime_error if the file is missing, unreadable or of another mesh.
   FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
               double keep_until, FieldLayout layout = {});
+  /// New files for a two-dimensional model's section mesh (Triangle_6 cells, z = 0); as the
+  /// constructor from a Mesh otherwise.
+  FieldWriter(const std::string& directory, const std::string& stem, const SectionMesh& mesh,
+              FieldLayout layout = {});
+  /// Continues the files of an earlier run on the same section mesh (as the Mesh variant; a
+  /// file of another mesh, a tetrahedral one included, is refused).
+  FieldWriter(const std::string& directory, const std::string& stem, const SectionMesh& mesh,
+              double keep_until, FieldLayout layout = {});
   ~FieldWriter();
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
 
   /// Appends output number num_outputs() at time `t` [s]. `u` is node-major, size 3·num_nodes
-  /// (u[3n+c], mm); `p_vertices` has one pressure per vertex [MPa] (each read only if the
-  /// layout writes it). `cells` holds the layout's cell fields in its order, element-major
+  /// (u[3n+c], mm), or for a section mesh 2·num_nodes (u[2n+c], the model's unknowns; written
+  /// with a third component 0); `p_vertices` has one pressure per vertex [MPa] (each read only if
+  /// the layout writes it). `cells` holds the layout's cell fields in its order, element-major
   /// (value[components·e + c]).
   void write(double t, const std::vector<double>& u, const std::vector<double>& p_vertices,
              const std::vector<std::vector<double>>& cells = {});
@@ -90,6 +111,11 @@ class FieldWriter {
   void write_xdmf() const;
   /// The HDF5 groups below /fields that the layout writes into.
   std::vector<std::string> groups() const;
+  /// The constructors' work for either kind of mesh (new files, or a restart).
+  template <class AnyMesh>
+  void create(const std::string& directory, const AnyMesh& mesh);
+  template <class AnyMesh>
+  void reopen(const std::string& directory, const AnyMesh& mesh, double keep_until);
 
   std::string stem_;
   std::string h5_path_;
@@ -97,8 +123,11 @@ class FieldWriter {
   std::int64_t file_ = -1;  ///< HDF5 file handle (hid_t)
   Index num_nodes_ = 0;
   Index num_vertices_ = 0;
-  Index num_tets_ = 0;
-  std::vector<std::array<Index, 2>> edges_;  ///< edge node → vertex pair
+  Index num_cells_ = 0;
+  int nodes_per_cell_ = 10;                       ///< 10 (Tetrahedron_10) or 6 (Triangle_6)
+  int u_components_ = 3;                          ///< entries per node of write()'s u
+  std::string topology_type_ = "Tetrahedron_10";  ///< XDMF TopologyType
+  std::vector<std::array<Index, 2>> edges_;       ///< edge node → vertex pair
   std::vector<double> times_;
   FieldLayout layout_;
 };

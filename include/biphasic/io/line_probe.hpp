@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic {
 
@@ -33,6 +34,10 @@ class LineProbe {
   /// the tolerance is negative or not finite, or fewer than two vertices lie on the segment.
   LineProbe(const Mesh& mesh, Point a, Point b, double tolerance);
 
+  /// The same on a section mesh: its nodes taken at (x, y, 0) (or (r, z, 0)), so a and b
+  /// should have z = 0 (a node off the segment by its z does not count).
+  LineProbe(const SectionMesh& mesh, Point a, Point b, double tolerance);
+
   /// Given samples (in order of increasing s) on a mesh of `num_nodes` nodes, the first
   /// `num_vertices` of them vertices. Throws std::runtime_error if a == b, there are fewer than
   /// two samples, s decreases, or a weight names a node (vertex) out of range.
@@ -56,10 +61,15 @@ class LineProbe {
   /// Pressure [MPa] at every sample from the vertex pressures (size num_vertices): at a node
   /// sample on an edge, the mean of the edge's two vertices.
   std::vector<double> pressure(const std::vector<double>& p_vertices) const;
-  /// Displacement [mm] at sample i; `u` is node-major, size 3·num_nodes.
+  /// Displacement [mm] at sample i; `u` is node-major, size 3·num_nodes (a section model's u
+  /// expanded with displacement_in_3d, field_writer.hpp).
   std::array<double, 3> displacement(const std::vector<double>& u, std::size_t i) const;
 
  private:
+  /// The node constructors' work, for nodes at `nodes` and edge nodes on `edges`.
+  void take_nodes_on_segment(const std::vector<Point>& nodes,
+                             const std::vector<std::array<Index, 2>>& edges);
+
   Point a_{};
   Point b_{};
   double tolerance_ = 0.0;
@@ -75,6 +85,9 @@ class LineProbe {
 /// consecutive samples are nodes of one element, so that the segment runs along element
 /// edges or through elements from node to node.
 bool runs_along_mesh(const LineProbe& probe, const Mesh& mesh);
+
+/// The same for a node probe on a section mesh (consecutive samples nodes of one triangle).
+bool runs_along_mesh(const LineProbe& probe, const SectionMesh& mesh);
 
 /// Piecewise-linear interpolation of samples f(s) at s_query; s must be non-decreasing and the
 /// result is clamped to the end values outside [s.front(), s.back()]. Throws

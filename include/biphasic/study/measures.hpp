@@ -30,7 +30,7 @@
 namespace biphasic {
 
 class LineProbe;
-class BiphasicProblem;
+class SemidiscreteSystem;
 
 /// Which ends of a probe line lie on a drained boundary (a prescribed pressure).
 enum class DrainedEnds { None, Start, End, Both };
@@ -62,10 +62,10 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
 /// in the units of p; ≥ 0 up to round-off. Throws std::invalid_argument for other counts.
 double excess_variation(const std::vector<double>& p, int turning_points);
 
-/// The drained ends of `probe` in `problem`: an end is drained when its pressure is
-/// interpolated from vertices whose pressure is prescribed (Dirichlet pressure rows) only: a
-/// vertex with a prescribed pressure, an edge node between two such vertices, or a point on a
-/// face of them.
-DrainedEnds drained_ends(const LineProbe& probe, const BiphasicProblem& problem);
+/// The drained ends of `probe` in `problem` (a BiphasicProblem or a SectionProblem): an end is
+/// drained when its pressure is interpolated from vertices whose pressure is prescribed
+/// (Dirichlet pressure rows) only: a vertex with a prescribed pressure, an edge node between
+/// two such vertices, or a point on a face (or edge, in a section) of them.
+DrainedEnds drained_ends(const LineProbe& probe, const SemidiscreteSystem& problem);
 
 }  // namespace biphasic
