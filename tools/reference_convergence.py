@@ -5,13 +5,16 @@ finest, with the discrepancy measure of the studies (docs/results.md): at every 
 max |p_h - p_ref| over the level's pressure nodes on the line, divided by max |p_ref| on it.
 
 usage: tools/reference_convergence.py [CASE] [--levels NRxNZ:RTOL,...] [-o DIR] [--dt S]
+                                     [--set KEY=VALUE ...]
 
 Defaults: cases/paper/axisymmetric_reference.toml, the levels 36x24:1e-6, 72x48:1e-7,
 144x96:1e-8 (each halving the cells in both directions and tightening the BDF tolerance
 tenfold), outputs every 0.32 s (the studies' output interval). Prints one row per level: its
 unknowns and wall time, the discrepancy against the finest level at t = 32 s, its maximum over
 t <= 1 s and over the whole run (from the first output on), and the same against the next finer
-level (what "one more refinement changes" means). Writes DIR/convergence.csv.
+level (what "one more refinement changes" means). Writes DIR/convergence.csv. --set passes
+overrides to every run; with output.line_points = n every level samples the same n points (the
+measure then carries no interpolation between the levels' nodes).
 """
 import argparse
 import csv
@@ -77,6 +80,7 @@ def main():
     ap.add_argument("--levels", default="36x24:1e-6,72x48:1e-7,144x96:1e-8")
     ap.add_argument("--dt", type=float, default=0.32, help="output interval [s]")
     ap.add_argument("-o", "--output", default=str(ROOT / "results/reference_convergence"))
+    ap.add_argument("--set", action="append", default=[], help="override for every run")
     args = ap.parse_args()
     out = pathlib.Path(args.output)
     out.mkdir(parents=True, exist_ok=True)
@@ -94,6 +98,8 @@ def main():
             cmd = [str(BIN), "run", args.case, "-o", str(run_dir), "--overwrite", "--quiet",
                    "--set", f"mesh.section.nr={nr}", "--set", f"mesh.section.nz={nz}",
                    "--set", f"time.bdf.rtol={rtol}", "--set", f"time.dt={args.dt}"]
+            for extra in args.set:
+                cmd += ["--set", extra]
             print(" ".join(cmd), file=sys.stderr, flush=True)
             subprocess.run(cmd, check=True)
         s = json.loads((run_dir / "summary.json").read_text())

@@ -66,8 +66,10 @@ std::string number_text(double x) {
 }
 
 /// Fingerprint of what a checkpoint's state depends on: the resolved configuration except
-/// time.t_end (a restart may go further), the title and the case file's name, and the mesh.
-std::uint64_t case_fingerprint(const Config& config, const Mesh& mesh) {
+/// time.t_end (a restart may go further), the title and the case file's name, and the mesh's
+/// nodes and elements (tetrahedra, or a section's triangles).
+template <class Elements>
+std::uint64_t case_fingerprint(const Config& config, const auto& nodes, const Elements& elements) {
   nlohmann::json physical = config_to_json(config);
   physical.erase("case_file");
   physical.erase("title");
@@ -76,22 +78,8 @@ std::uint64_t case_fingerprint(const Config& config, const Mesh& mesh) {
   auto bytes = [](const auto& v) {
     return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v.front()));
   };
-  h = fnv1a64(bytes(mesh.nodes), h);
-  return fnv1a64(bytes(mesh.tets), h);
-}
-
-/// The same for a two-dimensional model's section mesh.
-std::uint64_t case_fingerprint(const Config& config, const SectionMesh& mesh) {
-  nlohmann::json physical = config_to_json(config);
-  physical.erase("case_file");
-  physical.erase("title");
-  if (physical.contains("time")) physical["time"].erase("t_end");
-  std::uint64_t h = fnv1a64(physical.dump());
-  auto bytes = [](const auto& v) {
-    return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v.front()));
-  };
-  h = fnv1a64(bytes(mesh.nodes), h);
-  return fnv1a64(bytes(mesh.triangles), h);
+  h = fnv1a64(bytes(nodes), h);
+  return fnv1a64(bytes(elements), h);
 }
 
 /// Checks that a checkpoint belongs to this case and mesh and lies before time.t_end.
@@ -229,8 +217,8 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   integrator.set_progress_interval(options.progress_interval);
   const double setup_seconds = seconds_since(t0);
   const fs::path checkpoint_path = out_dir / kCheckpointName;
-  const std::uint64_t case_hash =
-      planar ? case_fingerprint(config, *mesh2) : case_fingerprint(config, *mesh3);
+  const std::uint64_t case_hash = planar ? case_fingerprint(config, mesh2->nodes, mesh2->triangles)
+                                         : case_fingerprint(config, mesh3->nodes, mesh3->tets);
   if (resume) {
     accept_checkpoint(*resume, checkpoint_path.string(), case_hash, problem.size(), config.time);
     try {

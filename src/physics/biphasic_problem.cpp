@@ -191,21 +191,11 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   row_scale_p_ = k_ref * mean_length;
 
   // Boundary conditions by physical-group name.
-  constrained_.assign(pattern_.size(), 0);
-  std::map<Index, std::size_t> owner;  // constrained dof → index of its boundary condition
+  DirichletRows rows_held(pattern_.size());
+  const auto label = [&](std::size_t i) { return bc_label(i, config.bcs[i]); };
   auto constrain = [&](std::size_t i, Index dof, double value, const LoadCurve* curve, Index node,
                        int field) {
-    auto [it, inserted] = owner.emplace(dof, i);
-    if (!inserted) {
-      const Dirichlet& d = *std::find_if(dirichlet_.begin(), dirichlet_.end(),
-                                         [&](const Dirichlet& x) { return x.dof == dof; });
-      if (d.value == value && d.curve == curve) return;
-      throw std::runtime_error(bc_label(i, config.bcs[i]) + " conflicts with " +
-                               bc_label(it->second, config.bcs[it->second]) +
-                               " on the same unknown (dof " + std::to_string(dof) + ")");
-    }
-    dirichlet_.push_back({dof, value, curve, node, field});
-    constrained_[dof] = 1;
+    rows_held.add(i, {dof, value, curve, node, field}, label, "dof " + std::to_string(dof));
   };
   // Opposite corner of each boundary face's tetrahedron (built on first use) orients normals.
   std::map<std::array<Index, 3>, Index> face_opposite;
@@ -226,27 +216,13 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   };
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
-    const Boundary* b = mesh.find_boundary(bc.boundary);
-    const NodeSet* node_set = b ? nullptr : mesh.find_node_set(bc.boundary);
-    if (!b && !node_set)
-      throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary of that name");
-    if (node_set && bc.type != BcType::Displacement)
-      throw std::runtime_error(bc_label(i, bc) +
-                               ": only displacement conditions apply to a physical point or curve");
-    const LoadCurve* curve = nullptr;
-    if (!bc.curve.empty()) {
-      auto it = curves_.find(bc.curve);
-      if (it == curves_.end())
-        throw std::runtime_error(bc_label(i, bc) + ": no load curve '" + bc.curve + "'");
-      curve = &it->second;
-    }
-    std::set<Index> nodes, vertices;
-    if (node_set) nodes.insert(node_set->nodes.begin(), node_set->nodes.end());
-    static const std::vector<Tri6> kNoFaces;
-    for (const Tri6& f : b ? b->faces : kNoFaces) {
-      nodes.insert(f.begin(), f.end());
-      vertices.insert(f.begin(), f.begin() + 3);
-    }
+    const auto target = detail::resolve_condition(
+        i, bc, mesh, curves_, "the mesh has no boundary of that name",
+        "only displacement conditions apply to a physical point or curve");
+    const Boundary* b = target.boundary;
+    const LoadCurve* curve = target.curve;
+    const std::set<Index>& nodes = target.nodes;
+    const std::set<Index>& vertices = target.vertices;
     switch (bc.type) {
       case BcType::Displacement:
       case BcType::Symmetry: {
@@ -256,13 +232,14 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
         for (Index n : nodes) {
           const Index dof = pattern_.u_dof(n, axis);
           constrain(i, dof, symmetry ? 0.0 : bc.value, symmetry ? nullptr : curve, n,
-                    symmetry ? -1 : axis);
+                    symmetry ? kHeldAtZero : axis);
           held.push_back(dof);
         }
         break;
       }
       case BcType::Pressure:
-        for (Index v : vertices) constrain(i, pattern_.p_dof(v), bc.value, curve, v, 3);
+        for (Index v : vertices)
+          constrain(i, pattern_.p_dof(v), bc.value, curve, v, kPressureField);
         break;
       case BcType::Flux:
       case BcType::Traction:
@@ -297,6 +274,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
       }
     }
   }
+  dirichlet_ = std::move(rows_held.rows());
+  constrained_ = std::move(rows_held.constrained());
   solution_scales_ = data_scales(mesh, config, modulus_);
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
@@ -380,7 +359,7 @@ void BiphasicProblem::set_dirichlet_fields(VectorField u, ScalarField p, VectorF
 double BiphasicProblem::dirichlet_value(const Dirichlet& d, double t) const {
   const DirichletFields& f = dirichlet_fields_;
   if (d.field >= 0 && d.field < 3 && f.u) return f.u(node_vec(mesh_, d.node), t)(d.field);
-  if (d.field == 3 && f.p) return f.p(node_vec(mesh_, d.node), t);
+  if (d.field == kPressureField && f.p) return f.p(node_vec(mesh_, d.node), t);
   return d.value * curve_value(d.curve, t);
 }
 
@@ -389,7 +368,7 @@ double BiphasicProblem::dirichlet_rate(const Dirichlet& d, double t) const {
   const Vec3 X = node_vec(mesh_, d.node);
   if (d.field >= 0 && d.field < 3 && f.u)
     return (f.u_rate ? f.u_rate(X, t) : central_rate(f.u, X, t))(d.field);
-  if (d.field == 3 && f.p) return f.p_rate ? f.p_rate(X, t) : central_rate(f.p, X, t);
+  if (d.field == kPressureField && f.p) return f.p_rate ? f.p_rate(X, t) : central_rate(f.p, X, t);
   return d.curve ? d.value * d.curve->slope(t) : 0.0;
 }
 

@@ -44,3 +44,62 @@ inline double largest_value(const BoundaryCondition& bc,
 }
 
 }  // namespace biphasic::detail
+
+#include <functional>
+#include <set>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
+#include "biphasic/physics/dirichlet_rows.hpp"
+
+namespace biphasic::detail {
+
+/// What a boundary condition acts on: the nodes and corner vertices of its named boundary (or
+/// the nodes of its physical point or curve), its boundary and its load curve.
+template <class Boundary>
+struct ConditionTarget {
+  const Boundary* boundary = nullptr;  ///< null for a node set
+  std::set<Index> nodes, vertices;
+  const LoadCurve* curve = nullptr;
+};
+
+inline const std::vector<Tri6>& elements_of(const Boundary& b) { return b.faces; }
+inline const std::vector<Line3>& elements_of(const SectionBoundary& b) { return b.segments; }
+
+/// Resolves condition i by name on `mesh` (a Mesh or a SectionMesh): its boundary's nodes and
+/// vertices (the first corners of each boundary element), or a node set's nodes for a
+/// displacement condition, and its curve. Throws std::runtime_error naming the condition:
+/// "<label>: <no_boundary>" for an unknown name, "<label>: <node_set_only>" for a non-
+/// displacement condition on a node set, and for an unknown curve.
+template <class MeshT>
+auto resolve_condition(std::size_t i, const BoundaryCondition& bc, const MeshT& mesh,
+                       const std::map<std::string, LoadCurve>& curves,
+                       const std::string& no_boundary, const std::string& node_set_only) {
+  using B = std::remove_cv_t<std::remove_pointer_t<decltype(mesh.find_boundary(""))>>;
+  ConditionTarget<B> target;
+  target.boundary = mesh.find_boundary(bc.boundary);
+  const NodeSet* node_set = target.boundary ? nullptr : mesh.find_node_set(bc.boundary);
+  if (!target.boundary && !node_set) throw std::runtime_error(bc_label(i, bc) + ": " + no_boundary);
+  if (node_set && bc.type != BcType::Displacement)
+    throw std::runtime_error(bc_label(i, bc) + ": " + node_set_only);
+  if (!bc.curve.empty()) {
+    const auto it = curves.find(bc.curve);
+    if (it == curves.end())
+      throw std::runtime_error(bc_label(i, bc) + ": no load curve '" + bc.curve + "'");
+    target.curve = &it->second;
+  }
+  if (node_set) target.nodes.insert(node_set->nodes.begin(), node_set->nodes.end());
+  if (target.boundary) {
+    for (const auto& element : elements_of(*target.boundary)) {
+      constexpr int kCorners = std::tuple_size_v<std::decay_t<decltype(element)>> == 6 ? 3 : 2;
+      target.nodes.insert(element.begin(), element.end());
+      target.vertices.insert(element.begin(), element.begin() + kCorners);
+    }
+  }
+  return target;
+}
+
+}  // namespace biphasic::detail

@@ -152,49 +152,23 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   row_scale_p_ = k_ref * depth;
 
   // Boundary conditions by curve (or point) name.
-  constrained_.assign(static_cast<std::size_t>(pattern_.size()), 0);
-  std::map<Index, std::size_t> owner;  // constrained unknown → its condition (or SIZE_MAX: axis)
+  DirichletRows rows_held(pattern_.size());
   constexpr std::size_t kAxis = static_cast<std::size_t>(-1);
-  auto label = [&](std::size_t i) {
+  const auto label = [&](std::size_t i) {
     return i == kAxis ? std::string("the axis condition u_r = 0") : bc_label(i, config.bcs[i]);
   };
   auto constrain = [&](std::size_t i, Index dof, double value, const LoadCurve* curve, Index node,
                        int field) {
-    auto [it, inserted] = owner.emplace(dof, i);
-    if (!inserted) {
-      const Dirichlet& d = *std::find_if(dirichlet_.begin(), dirichlet_.end(),
-                                         [&](const Dirichlet& x) { return x.dof == dof; });
-      if (d.value == value && d.curve == curve) return;
-      throw std::runtime_error(label(i) + " conflicts with " + label(it->second) +
-                               " on the same unknown (" + mesh_.describe_node(node) + ")");
-    }
-    dirichlet_.push_back({dof, value, curve, node, field});
-    constrained_[static_cast<std::size_t>(dof)] = 1;
+    rows_held.add(i, {dof, value, curve, node, field}, label, mesh_.describe_node(node));
   };
   const std::string axis_names[2] = {axisymmetric ? "r" : "x", axisymmetric ? "z" : "y"};
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
-    const SectionBoundary* b = mesh.find_boundary(bc.boundary);
-    const NodeSet* node_set = b ? nullptr : mesh.find_node_set(bc.boundary);
-    if (!b && !node_set)
-      throw std::runtime_error(bc_label(i, bc) + ": the mesh has no boundary curve of that name");
-    if (node_set && bc.type != BcType::Displacement)
-      throw std::runtime_error(bc_label(i, bc) +
-                               ": only displacement conditions apply to a physical point");
-    const LoadCurve* curve = nullptr;
-    if (!bc.curve.empty()) {
-      auto it = curves_.find(bc.curve);
-      if (it == curves_.end())
-        throw std::runtime_error(bc_label(i, bc) + ": no load curve '" + bc.curve + "'");
-      curve = &it->second;
-    }
-    std::set<Index> nodes, vertices;
-    if (node_set) nodes.insert(node_set->nodes.begin(), node_set->nodes.end());
-    static const std::vector<Line3> kNone;
-    for (const Line3& s : b ? b->segments : kNone) {
-      nodes.insert(s.begin(), s.end());
-      vertices.insert(s.begin(), s.begin() + 2);
-    }
+    const auto target = detail::resolve_condition(
+        i, bc, mesh, curves_, "the mesh has no boundary curve of that name",
+        "only displacement conditions apply to a physical point");
+    const SectionBoundary* b = target.boundary;
+    const LoadCurve* curve = target.curve;
     switch (bc.type) {
       case BcType::Displacement:
       case BcType::Symmetry: {
@@ -225,16 +199,17 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
                                    axis_names[0] + ", 1 = " + axis_names[1] + ")");
         }
         std::vector<Index>& held = held_rows_[bc.boundary];
-        for (Index n : nodes) {
+        for (Index n : target.nodes) {
           const Index dof = pattern_.u_dof(n, component);
           constrain(i, dof, symmetry ? 0.0 : bc.value, symmetry ? nullptr : curve, n,
-                    symmetry ? -1 : component);
+                    symmetry ? kHeldAtZero : component);
           held.push_back(dof);
         }
         break;
       }
       case BcType::Pressure:
-        for (Index v : vertices) constrain(i, pattern_.p_dof(v), bc.value, curve, v, 2);
+        for (Index v : target.vertices)
+          constrain(i, pattern_.p_dof(v), bc.value, curve, v, kPressureField);
         break;
       case BcType::Flux:
       case BcType::Traction:
@@ -284,8 +259,10 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     const double tol = 1e-10 * mesh_extent(mesh).maxCoeff();
     for (Index n = 0; n < mesh.num_nodes(); ++n)
       if (std::abs(mesh.nodes[n][0]) <= tol)
-        constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, -1);
+        constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, kHeldAtZero);
   }
+  dirichlet_ = std::move(rows_held.rows());
+  constrained_ = std::move(rows_held.constrained());
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -358,7 +335,7 @@ void SectionProblem::set_conservative_volume_rate(double dt) {
 double SectionProblem::dirichlet_value(const Dirichlet& d, double t) const {
   if (d.field >= 0 && d.field < 2 && dirichlet_u_)
     return dirichlet_u_(node_position(d.node), t)(d.field);
-  if (d.field == 2 && dirichlet_p_) return dirichlet_p_(node_position(d.node), t);
+  if (d.field == kPressureField && dirichlet_p_) return dirichlet_p_(node_position(d.node), t);
   return d.value * curve_value(d.curve, t);
 }
 
@@ -367,7 +344,7 @@ double SectionProblem::dirichlet_rate(const Dirichlet& d, double t) const {
   if (d.field >= 0 && d.field < 2 && dirichlet_u_)
     return (dirichlet_u_rate_ ? dirichlet_u_rate_(X, t)
                               : central_rate(dirichlet_u_, X, t))(d.field);
-  if (d.field == 2 && dirichlet_p_)
+  if (d.field == kPressureField && dirichlet_p_)
     return dirichlet_p_rate_ ? dirichlet_p_rate_(X, t) : central_rate(dirichlet_p_, X, t);
   return d.curve ? d.value * d.curve->slope(t) : 0.0;
 }

@@ -17,6 +17,7 @@
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
+#include "biphasic/physics/dirichlet_rows.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
@@ -153,13 +154,7 @@ class BiphasicProblem final : public BiphasicModel {
   double conductance_scale() const override { return row_scale_p_; }
 
  private:
-  struct Dirichlet {
-    Index dof;
-    double value;
-    const LoadCurve* curve;  ///< null = constant
-    Index node;              ///< node (displacement) or vertex (pressure) of the unknown
-    int field;               ///< 0, 1, 2: displacement component; 3: pressure; −1: symmetry
-  };
+  using Dirichlet = DirichletRow;
   struct VolumeLoads {
     VectorField b, b_rate;
     ScalarField s, s_rate;

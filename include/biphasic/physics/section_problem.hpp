@@ -25,6 +25,7 @@
 #include "biphasic/mesh/section_mesh.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/dirichlet_rows.hpp"
 #include "biphasic/physics/section_element.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
@@ -112,13 +113,7 @@ class SectionProblem final : public BiphasicModel {
   double conductance_scale() const override { return row_scale_p_; }
 
  private:
-  struct Dirichlet {
-    Index dof;
-    double value;
-    const LoadCurve* curve;  ///< null = constant
-    Index node;              ///< node (displacement) or vertex (pressure)
-    int field;               ///< 0, 1: displacement component; 2: pressure; −1: symmetry/axis
-  };
+  using Dirichlet = DirichletRow;
   struct NodalLoad {
     std::vector<std::pair<Index, double>> entries;  ///< (row, amount) added to F
     double value;
