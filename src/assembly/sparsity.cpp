@@ -4,8 +4,8 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 
 namespace biphasic {
 
