@@ -394,12 +394,7 @@ void BiphasicProblem::add_volume_loads(double t, bool rate, double* out) const {
   }
 }
 
-std::vector<double> BiphasicProblem::breakpoints() const {
-  std::set<double> t;
-  for (const auto& [name, c] : curves_)
-    for (double k : c.kinks()) t.insert(k);
-  return {t.begin(), t.end()};
-}
+std::vector<double> BiphasicProblem::breakpoints() const { return detail::curve_kinks(curves_); }
 
 void BiphasicProblem::apply_dirichlet(double t, double* y, double* ydot) const {
   for (const Dirichlet& d : dirichlet_) {
@@ -516,28 +511,10 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
 
 std::vector<std::array<double, 3>> BiphasicProblem::reactions(
     const std::vector<std::string>& boundaries, double t, const double* y, const double* ydot) {
-  std::vector<const std::vector<Index>*> rows;
-  for (const std::string& name : boundaries) {
-    const auto it = held_rows_.find(name);
-    if (it == held_rows_.end())
-      throw std::invalid_argument("reaction on '" + name +
-                                  "': the boundary has no displacement or symmetry condition");
-    rows.push_back(&it->second);
-  }
-  std::vector<double> F(size());
+  const auto rows = detail::reaction_rows(held_rows_, boundaries, "boundary");
+  std::vector<double> F(static_cast<std::size_t>(size()));
   assemble(t, y, ydot, F.data());
-  std::vector<std::array<double, 3>> out(boundaries.size(), {0.0, 0.0, 0.0});
-  for (std::size_t b = 0; b < rows.size(); ++b)
-    for (Index dof : *rows[b]) out[b][dof % 3] += F[dof];  // u_dof(n, c) = 3n + c
-  if (rows.size() >= 2) {
-    // The total counts a row held by several listed boundaries (a shared edge) once.
-    std::set<Index> all;
-    for (const auto* r : rows) all.insert(r->begin(), r->end());
-    std::array<double, 3> total{0.0, 0.0, 0.0};
-    for (Index dof : all) total[dof % 3] += F[dof];
-    out.push_back(total);
-  }
-  return out;
+  return detail::sum_reactions(rows, F, 3);
 }
 
 std::vector<std::string> BiphasicProblem::reaction_labels(
@@ -581,10 +558,7 @@ double BiphasicProblem::volume_change(const double* y) const {
 }
 
 void BiphasicProblem::set_conservative_volume_rate(double dt) {
-  if (!(dt >= 0.0) || !std::isfinite(dt))
-    throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
-                                " s must be >= 0 and finite");
-  volume_rate_dt_ = dt;
+  volume_rate_dt_ = detail::checked_volume_rate_dt(dt);
 }
 
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
@@ -597,13 +571,7 @@ void BiphasicProblem::residual(double t, const double* y, const double* ydot, do
 }
 
 std::pair<double, double> BiphasicProblem::field_norms(const double* F) const {
-  double ru = 0.0, rp = 0.0;
-  for (Index i = 0; i < size(); ++i) {
-    if (constrained_[i]) continue;
-    double& r = i < num_u() ? ru : rp;
-    r = std::max(r, std::abs(F[i]));
-  }
-  return {ru, rp};
+  return detail::free_row_norms(F, constrained_, num_u());
 }
 
 void BiphasicProblem::time_derivative(double t, double* dFdt) const {

@@ -103,3 +103,71 @@ auto resolve_condition(std::size_t i, const BoundaryCondition& bc, const MeshT& 
 }
 
 }  // namespace biphasic::detail
+
+namespace biphasic::detail {
+
+/// ‖F‖_∞ over the free rows below num_u [N] and over the free rows from num_u on [mm³/s].
+inline std::pair<double, double> free_row_norms(const double* F,
+                                                const std::vector<char>& constrained, Index num_u) {
+  double ru = 0.0, rp = 0.0;
+  for (Index i = 0; i < static_cast<Index>(constrained.size()); ++i) {
+    if (constrained[static_cast<std::size_t>(i)]) continue;
+    double& r = i < num_u ? ru : rp;
+    r = std::max(r, std::abs(F[i]));
+  }
+  return {ru, rp};
+}
+
+/// The kinks of every load curve, sorted and unique [s].
+inline std::vector<double> curve_kinks(const std::map<std::string, LoadCurve>& curves) {
+  std::set<double> t;
+  for (const auto& [name, c] : curves)
+    for (double k : c.kinks()) t.insert(k);
+  return {t.begin(), t.end()};
+}
+
+/// dt for the conservative volume rate; throws std::invalid_argument unless dt ≥ 0 and finite.
+inline double checked_volume_rate_dt(double dt) {
+  if (!(dt >= 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
+                                " s must be >= 0 and finite");
+  return dt;
+}
+
+/// The rows each named boundary's displacement and symmetry conditions hold, in `boundaries`'
+/// order; throws std::invalid_argument "reaction on '<name>': the <noun> has no displacement or
+/// symmetry condition" for a name without.
+inline std::vector<const std::vector<Index>*> reaction_rows(
+    const std::map<std::string, std::vector<Index>>& held_rows,
+    const std::vector<std::string>& boundaries, const std::string& noun) {
+  std::vector<const std::vector<Index>*> rows;
+  for (const std::string& name : boundaries) {
+    const auto it = held_rows.find(name);
+    if (it == held_rows.end())
+      throw std::invalid_argument("reaction on '" + name + "': the " + noun +
+                                  " has no displacement or symmetry condition");
+    rows.push_back(&it->second);
+  }
+  return rows;
+}
+
+/// Reactions from the assembled residual F: per boundary the sum of F over its rows, by
+/// component (u_dof(n, c) = components·n + c); with two or more boundaries also the total over
+/// the union of their rows, a row held by several (a shared edge) counted once.
+inline std::vector<std::array<double, 3>> sum_reactions(
+    const std::vector<const std::vector<Index>*>& rows, const std::vector<double>& F,
+    int components) {
+  std::vector<std::array<double, 3>> out(rows.size(), {0.0, 0.0, 0.0});
+  for (std::size_t b = 0; b < rows.size(); ++b)
+    for (Index dof : *rows[b]) out[b][static_cast<std::size_t>(dof % components)] += F[dof];
+  if (rows.size() >= 2) {
+    std::set<Index> all;
+    for (const auto* r : rows) all.insert(r->begin(), r->end());
+    std::array<double, 3> total{0.0, 0.0, 0.0};
+    for (Index dof : all) total[static_cast<std::size_t>(dof % components)] += F[dof];
+    out.push_back(total);
+  }
+  return out;
+}
+
+}  // namespace biphasic::detail

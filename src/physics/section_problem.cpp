@@ -326,10 +326,7 @@ void SectionProblem::set_dirichlet_fields(VectorField u, ScalarField p, VectorFi
 }
 
 void SectionProblem::set_conservative_volume_rate(double dt) {
-  if (!(dt >= 0.0) || !std::isfinite(dt))
-    throw std::invalid_argument("conservative volume rate: dt = " + std::to_string(dt) +
-                                " s must be >= 0 and finite");
-  volume_rate_dt_ = dt;
+  volume_rate_dt_ = detail::checked_volume_rate_dt(dt);
 }
 
 double SectionProblem::dirichlet_value(const Dirichlet& d, double t) const {
@@ -380,12 +377,7 @@ void SectionProblem::add_volume_loads(double t, bool rate, double* out) const {
   }
 }
 
-std::vector<double> SectionProblem::breakpoints() const {
-  std::set<double> t;
-  for (const auto& [name, c] : curves_)
-    for (double k : c.kinks()) t.insert(k);
-  return {t.begin(), t.end()};
-}
+std::vector<double> SectionProblem::breakpoints() const { return detail::curve_kinks(curves_); }
 
 void SectionProblem::apply_dirichlet(double t, double* y, double* ydot) const {
   for (const Dirichlet& d : dirichlet_) {
@@ -441,13 +433,7 @@ void SectionProblem::residual(double t, const double* y, const double* ydot, dou
 }
 
 std::pair<double, double> SectionProblem::field_norms(const double* F) const {
-  double ru = 0.0, rp = 0.0;
-  for (Index i = 0; i < size(); ++i) {
-    if (constrained_[static_cast<std::size_t>(i)]) continue;
-    double& r = i < num_u() ? ru : rp;
-    r = std::max(r, std::abs(F[i]));
-  }
-  return {ru, rp};
+  return detail::free_row_norms(F, constrained_, num_u());
 }
 
 void SectionProblem::time_derivative(double t, double* dFdt) const {
@@ -482,27 +468,10 @@ void SectionProblem::jacobian(double /*t*/, const double* y, const double* ydot,
 
 std::vector<std::array<double, 3>> SectionProblem::reactions(
     const std::vector<std::string>& boundaries, double t, const double* y, const double* ydot) {
-  std::vector<const std::vector<Index>*> rows;
-  for (const std::string& name : boundaries) {
-    const auto it = held_rows_.find(name);
-    if (it == held_rows_.end())
-      throw std::invalid_argument("reaction on '" + name +
-                                  "': the curve has no displacement or symmetry condition");
-    rows.push_back(&it->second);
-  }
+  const auto rows = detail::reaction_rows(held_rows_, boundaries, "curve");
   std::vector<double> F(static_cast<std::size_t>(size()));
   assemble(t, y, ydot, F.data());
-  std::vector<std::array<double, 3>> out(boundaries.size(), {0.0, 0.0, 0.0});
-  for (std::size_t b = 0; b < rows.size(); ++b)
-    for (Index dof : *rows[b]) out[b][static_cast<std::size_t>(dof % 2)] += F[dof];
-  if (rows.size() >= 2) {
-    std::set<Index> all;
-    for (const auto* r : rows) all.insert(r->begin(), r->end());
-    std::array<double, 3> total{0.0, 0.0, 0.0};
-    for (Index dof : all) total[static_cast<std::size_t>(dof % 2)] += F[dof];
-    out.push_back(total);
-  }
-  return out;
+  return detail::sum_reactions(rows, F, 2);
 }
 
 FluidRates SectionProblem::fluid_rates(double t, const double* y, const double* ydot) {
