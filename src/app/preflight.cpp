@@ -47,7 +47,8 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
 /// "boundary[2] (displacement z on 'top')".
 std::string label(std::size_t i, const BoundaryCondition& bc) {
   std::string what = to_string(bc.type);
-  if (bc.type == BcType::Displacement) what += std::string(" ") + axis_name(bc.component);
+  if (bc.type == BcType::Displacement || bc.type == BcType::RigidPlaten)
+    what += std::string(" ") + axis_name(bc.component);
   return "boundary[" + std::to_string(i) + "] (" + what + " on '" + bc.boundary + "')";
 }
 

@@ -5,29 +5,32 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
 namespace biphasic {
 
-SparsityPattern::SparsityPattern(const Mesh& mesh)
+SparsityPattern::SparsityPattern(const Mesh& mesh, const std::vector<NodeCoupling>& couplings)
     : components_(3),
       num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
       num_dofs_(3 * mesh.num_nodes() + mesh.num_vertices) {
-  build(mesh.tets, kTetEdges);
+  build(mesh.tets, kTetEdges, couplings);
 }
 
-SparsityPattern::SparsityPattern(const SectionMesh& mesh)
+SparsityPattern::SparsityPattern(const SectionMesh& mesh,
+                                 const std::vector<NodeCoupling>& couplings)
     : components_(2),
       num_nodes_(mesh.num_nodes()),
       num_vertices_(mesh.num_vertices),
       num_dofs_(2 * mesh.num_nodes() + mesh.num_vertices) {
-  build(mesh.triangles, kTriEdges);
+  build(mesh.triangles, kTriEdges, couplings);
 }
 
 template <class Element, std::size_t NumEdges>
 void SparsityPattern::build(const std::vector<Element>& elements,
-                            const std::array<std::array<int, 2>, NumEdges>& edges) {
+                            const std::array<std::array<int, 2>, NumEdges>& edges,
+                            const std::vector<NodeCoupling>& couplings) {
   constexpr int kNodes = static_cast<int>(std::tuple_size_v<Element>);
   constexpr int kCorners = kNodes - static_cast<int>(NumEdges);
   const Index d = components_;
@@ -36,6 +39,20 @@ void SparsityPattern::build(const std::vector<Element>& elements,
   for (const Element& t : elements)
     for (Index a : t)
       for (Index b : t) adj[a].push_back(b);
+  for (const NodeCoupling& c : couplings) {
+    if (c.node < 0 || c.node >= num_nodes_)
+      throw std::invalid_argument("SparsityPattern: coupled node " + std::to_string(c.node) +
+                                  " is not a node of the mesh");
+    for (Index n : c.nodes) {
+      if (n < 0 || n >= num_nodes_)
+        throw std::invalid_argument("SparsityPattern: coupled node " + std::to_string(n) +
+                                    " is not a node of the mesh");
+      adj[c.node].push_back(n);
+      adj[n].push_back(c.node);
+    }
+    adj[c.node].push_back(c.node);
+    late_nodes_.push_back(c.node);
+  }
   adj_ptr_.assign(num_nodes_ + 1, 0);
   for (Index n = 0; n < num_nodes_; ++n) {
     auto& list = adj[n];
@@ -176,6 +193,11 @@ std::vector<Index> SparsityPattern::nested_dissection_order() const {
     const auto [a, b] = edge_ends_[static_cast<std::size_t>(n - num_vertices_)];
     keyed[n] = {2 * Index{std::min(iperm[a], iperm[b])} + 1, n};
   }
+  // Coupled nodes last: their rows and columns are dense over a platen's neighbourhood, and
+  // eliminating them early would fill the whole neighbourhood.
+  const Index last = 2 * static_cast<Index>(num_vertices_) + 2;
+  for (std::size_t k = 0; k < late_nodes_.size(); ++k)
+    keyed[static_cast<std::size_t>(late_nodes_[k])].first = last + static_cast<Index>(k);
   std::sort(keyed.begin(), keyed.end());
   std::vector<Index> order;
   order.reserve(static_cast<std::size_t>(num_dofs_));

@@ -1003,20 +1003,20 @@ void check_mesh_source_keys(const toml::table& root, const Config& config, Probl
   }
 }
 
-/// Every boundary in output.reactions must carry a displacement or symmetry condition (else
-/// nothing holds it and its reaction is zero by definition).
+/// Every boundary in output.reactions must carry a displacement, symmetry or rigid-platen
+/// condition (else nothing holds it and its reaction is zero by definition).
 void check_reaction_boundaries(const toml::table& root, const Config& config, Problems& problems) {
   if (problems.is_bad("output.reactions")) return;
   for (const std::string& name : config.output.reactions) {
     const bool held = std::any_of(config.bcs.begin(), config.bcs.end(), [&](const auto& bc) {
-      return bc.boundary == name &&
-             (bc.type == BcType::Displacement || bc.type == BcType::Symmetry);
+      return bc.boundary == name && (bc.type == BcType::Displacement ||
+                                     bc.type == BcType::Symmetry || bc.type == BcType::RigidPlaten);
     });
     if (!held) {
       problems.bad_value(
           "output.reactions",
           shown_at(root, "output.reactions", format_value(config.output.reactions)),
-          quote(name) + " has no displacement or symmetry condition, so no reaction");
+          quote(name) + " has no displacement, symmetry or rigid_platen condition, so no reaction");
     }
   }
 }
@@ -1118,7 +1118,7 @@ void check_model(const toml::table& root, const Config& config, Problems& proble
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
     const std::string entry = "boundary[" + std::to_string(i) + "]";
-    if (bc.type == BcType::Displacement && bc.component == 2)
+    if ((bc.type == BcType::Displacement || bc.type == BcType::RigidPlaten) && bc.component == 2)
       problems.bad_value(entry + ".component", "\"z\"",
                          "model = " + model + " has components x and y only");
     if (bc.type == BcType::Traction && bc.vector[2] != 0.0)
@@ -1137,11 +1137,29 @@ void check_model(const toml::table& root, const Config& config, Problems& proble
   }
 }
 
+/// The iterative solver's block preconditioner treats every tied row as a Dirichlet row and has
+/// no place for a platen's force row: rigid platens need a direct solver.
+void check_platen_solver(const toml::table& root, const Config& config, Problems& problems) {
+  if (problems.is_bad("linear_solver.type") ||
+      config.linear_solver.type != LinearSolverType::Iterative)
+    return;
+  for (std::size_t i = 0; i < config.bcs.size(); ++i)
+    if (config.bcs[i].type == BcType::RigidPlaten) {
+      problems.bad_value("linear_solver.type",
+                         shown_at(root, "linear_solver.type", "\"iterative\""),
+                         "boundary[" + std::to_string(i) +
+                             "] is a rigid_platen, which needs a direct solver (\"klu\", "
+                             "\"umfpack\" or \"mumps\")");
+      return;
+    }
+}
+
 void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
                         Problems& problems) {
   check_mesh_source_keys(root, config, problems);
   check_model(root, config, problems);
   check_reaction_boundaries(root, config, problems);
+  check_platen_solver(root, config, problems);
   if (!problems.is_bad("time.dt") && !problems.is_bad("time.t_end") &&
       config.time.dt > config.time.t_end) {
     problems.bad_value("time.dt", shown_at(root, "time.dt", format_number(config.time.dt)),

@@ -41,7 +41,8 @@ const Names<BcType>& bc_names() {
   static const Names<BcType> names{
       {"displacement", BcType::Displacement}, {"symmetry", BcType::Symmetry},
       {"pressure", BcType::Pressure},         {"flux", BcType::Flux},
-      {"traction", BcType::Traction},         {"normal_traction", BcType::NormalTraction}};
+      {"traction", BcType::Traction},         {"normal_traction", BcType::NormalTraction},
+      {"rigid_platen", BcType::RigidPlaten}};
   return names;
 }
 
@@ -782,35 +783,40 @@ std::vector<Key<BoundaryCondition>> build_boundary_keys() {
       "type", bc_names(),
       "Kind of condition: prescribed displacement component, symmetry (zero normal "
       "displacement on an axis-aligned plane), fluid pressure, outward fluid flux, nominal "
-      "traction vector, or nominal normal traction (positive value pushes inwards).",
+      "traction vector, nominal normal traction (positive value pushes inwards), or a rigid "
+      "platen under a prescribed total force (the boundary moves as one body along `component`).",
       [](auto& b) -> auto& { return b.type; });
   type.required = true;
   keys.push_back(type);
 
   auto component = choice_key<B>(
-      "component", component_names(), "Displacement component that is prescribed.",
+      "component", component_names(),
+      "Displacement component that is prescribed, or along which a rigid platen moves.",
       [](auto& b) -> auto& { return b.component; });
   component.per_type = true;
-  component.need =
-      needs({T::Displacement}, {T::Symmetry, T::Pressure, T::Flux, T::Traction, T::NormalTraction});
+  component.need = needs({T::Displacement, T::RigidPlaten},
+                         {T::Symmetry, T::Pressure, T::Flux, T::Traction, T::NormalTraction});
   keys.push_back(component);
 
   auto value = number_key<B>(
-      "value", Range{}, "mm, MPa or mm/s",
+      "value", Range{}, "mm, MPa, mm/s or N",
       "Scale of the load curve: displacement [mm], pressure [MPa], flux [mm/s], normal "
-      "traction [MPa].",
+      "traction [MPa], or a rigid platen's total force on the body along its component [N] "
+      "(negative pushes toward −component; the force on the modelled part: a quarter model "
+      "carries a quarter of the load, an axisymmetric one the full circle, a plane-strain one "
+      "per mm of depth).",
       [](auto& b) -> auto& { return b.value; });
   value.per_type = true;
-  value.need =
-      needs({T::Displacement, T::Pressure, T::Flux, T::NormalTraction}, {T::Symmetry, T::Traction});
+  value.need = needs({T::Displacement, T::Pressure, T::Flux, T::NormalTraction, T::RigidPlaten},
+                     {T::Symmetry, T::Traction});
   keys.push_back(value);
 
   auto vector = vector_key<B>(
       "vector", "MPa", "Nominal traction vector, scaled by the curve.",
       [](auto& b) -> auto& { return b.vector; });
   vector.per_type = true;
-  vector.need =
-      needs({T::Traction}, {T::Displacement, T::Symmetry, T::Pressure, T::Flux, T::NormalTraction});
+  vector.need = needs({T::Traction}, {T::Displacement, T::Symmetry, T::Pressure, T::Flux,
+                                      T::NormalTraction, T::RigidPlaten});
   keys.push_back(vector);
 
   auto curve = string_key<B>(

@@ -34,7 +34,7 @@ enum class Kind {
 /// Whether a [[boundary]] key must, may or must not appear for a given boundary type.
 enum class Need { Optional, Required, Forbidden };
 
-inline constexpr std::size_t kBcTypeCount = 6;
+inline constexpr std::size_t kBcTypeCount = 7;
 
 /// Closed or open bounds on a number; an unset side is unbounded.
 struct Range {

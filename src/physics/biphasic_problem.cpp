@@ -104,6 +104,7 @@ std::pair<double, double> data_scales(const Mesh& mesh, const Config& config, do
         break;
       case BcType::Symmetry:
       case BcType::Flux:
+      case BcType::RigidPlaten:  // by RigidPlatens::raise_solution_scales
         break;
     }
   }
@@ -116,7 +117,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
     : mesh_(mesh),
       curves_(config.curves),
       laws_{make_material_laws(config.material)},
-      pattern_(mesh),
+      platens_(mesh, config, curves_),
+      pattern_(mesh, platens_.couplings()),
       colours_(colour_elements(mesh)) {
   // Reference geometry per element and quadrature point; GLS coefficients.
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
@@ -272,11 +274,31 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
         nodal_loads_.push_back(std::move(nl));
         break;
       }
+      case BcType::RigidPlaten:  // platens_
+        break;
     }
   }
   dirichlet_ = std::move(rows_held.rows());
-  constrained_ = std::move(rows_held.constrained());
+  dirichlet_held_ = std::move(rows_held.constrained());
+  platens_.check_free(dirichlet_held_, config.bcs, 3);
+  platens_.bind(pattern_, row_scale_u_);
+  constrained_ = dirichlet_held_;
+  platens_.mark_tied(constrained_);
+  for (const RigidPlaten& platen : platens_.platens()) {
+    std::vector<Index>& held = held_rows_[platen.boundary];
+    held.insert(held.end(), platen.dofs.begin(), platen.dofs.end());
+  }
   solution_scales_ = data_scales(mesh, config, modulus_);
+  if (!platens_.empty()) {
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const auto& x : mesh.nodes)
+      for (int c = 0; c < 3; ++c) {
+        lo(c) = std::min(lo(c), x[c]);
+        hi(c) = std::max(hi(c), x[c]);
+      }
+    const Vec3 extent = hi - lo;
+    platens_.raise_solution_scales(config, modulus_, extent.data(), solution_scales_);
+  }
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -401,6 +423,7 @@ void BiphasicProblem::apply_dirichlet(double t, double* y, double* ydot) const {
     y[d.dof] = dirichlet_value(d, t);
     if (ydot) ydot[d.dof] = dirichlet_rate(d, t);
   }
+  platens_.apply(y, ydot);
 }
 
 void BiphasicProblem::gather(Index e, const double* y, const double* ydot, ElementVector& ye,
@@ -564,6 +587,7 @@ void BiphasicProblem::set_conservative_volume_rate(double dt) {
 void BiphasicProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   assemble(t, y, ydot, F);
+  platens_.residual(t, y, F);
   for (const Dirichlet& d : dirichlet_)
     F[d.dof] = dirichlet_scale(d) * (y[d.dof] - dirichlet_value(d, t));
   ++stats_.residual_evaluations;
@@ -582,6 +606,7 @@ void BiphasicProblem::time_derivative(double t, double* dFdt) const {
     for (const auto& [row, amount] : l.entries) dFdt[row] += rate * amount;
   }
   add_volume_loads(t, true, dFdt);
+  platens_.time_derivative(t, dFdt);
   // Every Dirichlet row, also those without a curve: loads on their nodes do not reach them.
   for (const Dirichlet& d : dirichlet_) dFdt[d.dof] = -dirichlet_scale(d) * dirichlet_rate(d, t);
 }
@@ -592,10 +617,12 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
   std::fill(values, values + pattern_.nnz(), 0.0);
   if (rate_values) std::fill(rate_values, rate_values + pattern_.nnz(), 0.0);
   for_each_element(true, y, ydot, [&](Index e, const ElementOutput& out) {
-    pattern_.scatter(e, mesh_.tets[e], out.dfdy, out.dfdydot, cj, constrained_, values);
+    pattern_.scatter(e, mesh_.tets[e], out.dfdy, out.dfdydot, cj, dirichlet_held_, values);
     if (rate_values)
-      pattern_.scatter(e, mesh_.tets[e], out.dfdydot, out.dfdydot, 0.0, constrained_, rate_values);
+      pattern_.scatter(e, mesh_.tets[e], out.dfdydot, out.dfdydot, 0.0, dirichlet_held_,
+                       rate_values);
   });
+  platens_.jacobian(values, rate_values);
   for (const Dirichlet& d : dirichlet_) values[pattern_.find(d.dof, d.dof)] = dirichlet_scale(d);
   ++stats_.jacobian_evaluations;
   stats_.jacobian_seconds += seconds_since(t0);

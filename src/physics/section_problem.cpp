@@ -84,7 +84,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
       model_(model),
       curves_(config.curves),
       laws_{make_material_laws(config.material)},
-      pattern_(mesh) {
+      platens_(mesh, model == SectionModel::Axisymmetric, config, curves_),
+      pattern_(mesh, platens_.couplings()) {
   const bool axisymmetric = model == SectionModel::Axisymmetric;
   const std::size_t num_elements = mesh.triangles.size();
   // Material regions, as in the three-dimensional problem.
@@ -252,6 +253,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
         nodal_loads_.push_back(std::move(nl));
         break;
       }
+      case BcType::RigidPlaten:  // platens_
+        break;
     }
   }
   // Axisymmetric: u_r = 0 on the axis.
@@ -262,7 +265,15 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
         constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, kHeldAtZero);
   }
   dirichlet_ = std::move(rows_held.rows());
-  constrained_ = std::move(rows_held.constrained());
+  dirichlet_held_ = std::move(rows_held.constrained());
+  platens_.check_free(dirichlet_held_, config.bcs, 2);
+  platens_.bind(pattern_, row_scale_u_);
+  constrained_ = dirichlet_held_;
+  platens_.mark_tied(constrained_);
+  for (const RigidPlaten& platen : platens_.platens()) {
+    std::vector<Index>& held = held_rows_[platen.boundary];
+    held.insert(held.end(), platen.dofs.begin(), platen.dofs.end());
+  }
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -283,6 +294,7 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     }
   }
   solution_scales_ = {us, ps};
+  platens_.raise_solution_scales(config, HA, extent.data(), solution_scales_);
 
   // Volume loads from the case's formulas.
   const auto& bf = config.loads.body_force;
@@ -384,6 +396,7 @@ void SectionProblem::apply_dirichlet(double t, double* y, double* ydot) const {
     y[d.dof] = dirichlet_value(d, t);
     if (ydot) ydot[d.dof] = dirichlet_rate(d, t);
   }
+  platens_.apply(y, ydot);
 }
 
 void SectionProblem::element(Index e, const double* y, const double* ydot, bool with_jacobian,
@@ -426,6 +439,7 @@ void SectionProblem::assemble(double t, const double* y, const double* ydot, dou
 void SectionProblem::residual(double t, const double* y, const double* ydot, double* F) {
   const auto t0 = Clock::now();
   assemble(t, y, ydot, F);
+  platens_.residual(t, y, F);
   for (const Dirichlet& d : dirichlet_)
     F[d.dof] = dirichlet_scale(d) * (y[d.dof] - dirichlet_value(d, t));
   ++stats_.residual_evaluations;
@@ -444,6 +458,7 @@ void SectionProblem::time_derivative(double t, double* dFdt) const {
     for (const auto& [row, amount] : l.entries) dFdt[row] += rate * amount;
   }
   add_volume_loads(t, true, dFdt);
+  platens_.time_derivative(t, dFdt);
   for (const Dirichlet& d : dirichlet_) dFdt[d.dof] = -dirichlet_scale(d) * dirichlet_rate(d, t);
 }
 
@@ -456,11 +471,12 @@ void SectionProblem::jacobian(double /*t*/, const double* y, const double* ydot,
   for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
     const auto el = static_cast<Index>(e);
     element(el, y, ydot, true, out);
-    pattern_.scatter(el, mesh_.triangles[e], out.dfdy, out.dfdydot, cj, constrained_, values);
+    pattern_.scatter(el, mesh_.triangles[e], out.dfdy, out.dfdydot, cj, dirichlet_held_, values);
     if (rate_values)
-      pattern_.scatter(el, mesh_.triangles[e], out.dfdydot, out.dfdydot, 0.0, constrained_,
+      pattern_.scatter(el, mesh_.triangles[e], out.dfdydot, out.dfdydot, 0.0, dirichlet_held_,
                        rate_values);
   }
+  platens_.jacobian(values, rate_values);
   for (const Dirichlet& d : dirichlet_) values[pattern_.find(d.dof, d.dof)] = dirichlet_scale(d);
   ++stats_.jacobian_evaluations;
   stats_.jacobian_seconds += seconds_since(t0);

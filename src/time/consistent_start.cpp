@@ -220,12 +220,8 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
       const std::vector<double> w = system.solve(rhs);
       std::copy(w.begin() + nu, w.end(), out.ydot.begin() + nu);
     }
-    // Dirichlet rows exactly.
-    for (Index i = 0; i < n; ++i)
-      if (fixed[i]) {
-        out.y[i] = g[i];
-        out.ydot[i] = gdot[i];
-      }
+    // Dirichlet rows exactly (and unknowns tied to a rigid platen equal to its master's).
+    problem.apply_dirichlet(t, out.y.data(), out.ydot.data());
     std::vector<double> F(n);
     problem.residual(t, out.y.data(), out.ydot.data(), F.data());
     std::tie(out.residual_u, out.residual_p) = problem.field_norms(F.data());

@@ -767,8 +767,9 @@ TEST(CaseFile, ReactionBoundariesNeedADisplacementOrSymmetryCondition) {
   const auto problems =
       problems_of(kMinimalCase + side + "[output]\nreactions = [\"top\", \"side\"]\n");
   ASSERT_EQ(problems.size(), 1u);
-  EXPECT_TRUE(has_problem(problems, {"output.reactions = [\"top\", \"side\"]",
-                                     "\"side\" has no displacement or symmetry condition"}));
+  EXPECT_TRUE(
+      has_problem(problems, {"output.reactions = [\"top\", \"side\"]",
+                             "\"side\" has no displacement, symmetry or rigid_platen condition"}));
 }
 
 TEST(CaseFile, CheckBoundariesAgainstTheMesh) {

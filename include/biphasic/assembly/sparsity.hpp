@@ -16,15 +16,24 @@
 
 namespace biphasic {
 
+/// Extra coupling beyond the elements: every unknown of `node` couples with every unknown of
+/// each of `nodes` (both ways). A rigid platen's master node couples so with the nodes next to
+/// the platen (physics/rigid_platen.hpp). The fill-reducing order places `node` last.
+struct NodeCoupling {
+  Index node;
+  std::vector<Index> nodes;
+};
+
 /// Unknowns y = (u of every node, node-major: dn + c; then p of every vertex: dN + v), with
 /// d = components() displacement components per node (3 on a tetrahedral mesh, 2 on a section
 /// mesh). The CSC pattern couples every pair of unknowns that share an element (all four blocks
 /// u–u, u–p, p–u, p–p); row indices are sorted within each column.
 class SparsityPattern {
  public:
-  explicit SparsityPattern(const Mesh& mesh);
+  explicit SparsityPattern(const Mesh& mesh, const std::vector<NodeCoupling>& couplings = {});
   /// The pattern of a two-dimensional model: two displacement components per node.
-  explicit SparsityPattern(const SectionMesh& mesh);
+  explicit SparsityPattern(const SectionMesh& mesh,
+                           const std::vector<NodeCoupling>& couplings = {});
 
   Index size() const { return num_dofs_; }
   /// Displacement components per node (3 or 2).
@@ -55,7 +64,8 @@ class SparsityPattern {
   /// each node's unknowns kept together. Every edge node then lies in the subdomain or
   /// separator of that vertex, so the order is a nested dissection of the node graph too: as
   /// little fill as METIS on the node graph (within ±7 % in flops on the paper's meshes), at a
-  /// tenth of the ordering time. order[k] = unknown placed k-th.
+  /// tenth of the ordering time. The nodes of extra couplings (NodeCoupling) come last.
+  /// order[k] = unknown placed k-th.
   std::vector<Index> nested_dissection_order() const;
 
   /// A new SUNSparseMatrix (CSC) holding this pattern, values zero; the caller destroys it.
@@ -81,7 +91,8 @@ class SparsityPattern {
   /// their corners first, then one node per edge of `edges`.
   template <class Element, std::size_t NumEdges>
   void build(const std::vector<Element>& elements,
-             const std::array<std::array<int, 2>, NumEdges>& edges);
+             const std::array<std::array<int, 2>, NumEdges>& edges,
+             const std::vector<NodeCoupling>& couplings);
 
   int components_ = 3;
   Index num_nodes_ = 0, num_vertices_ = 0, num_dofs_ = 0;
@@ -89,6 +100,7 @@ class SparsityPattern {
   std::vector<Index> colptr_, rowind_;
   std::vector<std::array<std::int32_t, 100>> local_pos_;  ///< [a·10+b] = index of b in adj(a)
   std::vector<std::array<Index, 2>> edge_ends_;  ///< end vertices of edge node num_vertices_ + i
+  std::vector<Index> late_nodes_;                ///< coupled nodes, ordered last
 };
 
 }  // namespace biphasic

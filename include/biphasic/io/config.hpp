@@ -66,6 +66,10 @@ enum class BcType {
   Flux,            ///< outward normal flux q̄ = value · curve(t) [mm/s]
   Traction,        ///< nominal (dead) traction vector · curve(t) [MPa]
   NormalTraction,  ///< nominal traction −value · curve(t) · N (reference normal) [MPa]
+  /// The boundary moves as a rigid body along `component` (one unknown: the platen's
+  /// displacement) and the total force it exerts on the body along that axis is
+  /// value · curve(t) [N] (docs/rigid_platen.md).
+  RigidPlaten,
 };
 
 /// Volume loads given as formulas of the reference position X = (x, y, z) [mm] and time t [s],
@@ -79,7 +83,7 @@ struct VolumeLoadConfig {
 struct BoundaryCondition {
   BcType type = BcType::Displacement;
   std::string boundary;            ///< physical-group name
-  int component = 0;               ///< 0,1,2 = x,y,z (displacement only)
+  int component = 0;               ///< 0,1,2 = x,y,z (displacement and rigid platen)
   double value = 0.0;              ///< scale of the curve (units by type)
   std::array<double, 3> vector{};  ///< traction vector [MPa] (traction only)
   std::string curve;               ///< load-curve name; empty = constant 1

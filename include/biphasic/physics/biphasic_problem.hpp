@@ -18,6 +18,7 @@
 #include "biphasic/physics/biphasic_element.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
+#include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
@@ -59,8 +60,11 @@ class BiphasicProblem final : public BiphasicModel {
 
   const Mesh& mesh() const { return mesh_; }
   const SparsityPattern& pattern() const override { return pattern_; }
-  /// Unknowns fixed by Dirichlet conditions (their rows read s·(y_i − ḡ_i(t)) = 0).
+  /// Unknowns fixed by Dirichlet conditions (their rows read s·(y_i − ḡ_i(t)) = 0) and tied to
+  /// a rigid platen (s·(u_i − u_m) = 0).
   const std::vector<char>& constrained() const override { return constrained_; }
+  /// The rigid platens under a prescribed force (physics/rigid_platen.hpp).
+  const RigidPlatens& platens() const { return platens_; }
 
   /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
   void residual(double t, const double* y, const double* ydot, double* F) override;
@@ -199,6 +203,7 @@ class BiphasicProblem final : public BiphasicModel {
   double volume_rate_dt_ = 0.0;  ///< ElementCoefficients::volume_rate_dt [s]
   std::vector<std::vector<PointGeometry>> geometry_;
   std::vector<Eigen::Matrix<double, 10, 1>> point_p2_;  ///< P2 values at the rule's points
+  RigidPlatens platens_;  ///< before pattern_: the pattern holds their couplings
   VolumeLoads loads_;
   DirichletFields dirichlet_fields_;
   std::vector<double> load_cache_;  ///< add_volume_loads at load_cache_t_ (empty = stale)
@@ -211,8 +216,10 @@ class BiphasicProblem final : public BiphasicModel {
   /// barriers instead of one per colour, which matters when a core is shared or stolen).
   std::vector<std::vector<double>> thread_residuals_;
   std::vector<Dirichlet> dirichlet_;
-  std::vector<char> constrained_;
-  /// Displacement rows fixed by each boundary's own displacement and symmetry conditions.
+  std::vector<char> dirichlet_held_;  ///< the Dirichlet rows' unknowns (not assembled)
+  std::vector<char> constrained_;     ///< Dirichlet and platen-tied unknowns
+  /// Displacement rows fixed by each boundary's own displacement, symmetry and rigid-platen
+  /// conditions.
   std::map<std::string, std::vector<Index>> held_rows_;
   std::vector<NodalLoad> nodal_loads_;
   std::pair<double, double> solution_scales_{0.0, 0.0};

@@ -26,6 +26,7 @@
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
+#include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/physics/section_element.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
@@ -60,6 +61,8 @@ class SectionProblem final : public BiphasicModel {
   const SectionMesh& mesh() const { return mesh_; }
   SectionModel model() const { return model_; }
   const SparsityPattern& pattern() const override { return pattern_; }
+  /// The rigid platens under a prescribed force (physics/rigid_platen.hpp).
+  const RigidPlatens& platens() const { return platens_; }
   const std::vector<char>& constrained() const override { return constrained_; }
 
   void residual(double t, const double* y, const double* ydot, double* F) override;
@@ -139,9 +142,11 @@ class SectionProblem final : public BiphasicModel {
   double volume_rate_dt_ = 0.0;
   std::vector<std::vector<SectionPointGeometry>> geometry_;
   std::vector<double> gls_c_, flux_beta_;
+  RigidPlatens platens_;  ///< before pattern_: the pattern holds their couplings
   SparsityPattern pattern_;
   std::vector<Dirichlet> dirichlet_;
-  std::vector<char> constrained_;
+  std::vector<char> dirichlet_held_;  ///< the Dirichlet rows' unknowns (not assembled)
+  std::vector<char> constrained_;     ///< Dirichlet and platen-tied unknowns
   std::map<std::string, std::vector<Index>> held_rows_;
   std::vector<NodalLoad> nodal_loads_;
   VectorField body_force_, body_force_rate_;
