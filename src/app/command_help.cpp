@@ -10,6 +10,7 @@ constexpr const char* kRunFiles =
   probe_NAME.csv the same on each [[probe]] line
   fields.h5      displacement (P2 nodes) and pressure per output time; open fields.xdmf in ParaView
   reactions.csv  t, boundary, Fx, Fy, Fz of the boundaries in output.reactions
+  platens.csv    t, platen, displacement, force of each rigid_platen condition
   summary.json   resolved configuration, overrides, mesh size, per-step records, counters,
                  timings, and the final status: completed, failed (with the error) or invalid
 )";

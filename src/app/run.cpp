@@ -30,6 +30,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/line_probe.hpp"
 #include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/platen_csv.hpp"
 #include "biphasic/io/reaction_csv.hpp"
 #include "biphasic/mesh/mesh_cache.hpp"
 #include "biphasic/mesh/mesh_sources.hpp"
@@ -311,6 +312,20 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     if (append) keep_csv_rows_until(path, resume->t);
     reaction_csv = std::make_unique<ReactionCsv>(path, append);
   }
+  std::unique_ptr<PlatenCsv> platen_csv;
+  const RigidPlatens& platens = problem.platens();
+  if (!platens.empty()) {
+    const std::string path = (out_dir / "platens.csv").string();
+    if (append) keep_csv_rows_until(path, resume->t);
+    platen_csv = std::make_unique<PlatenCsv>(path, append);
+    nlohmann::json list = nlohmann::json::array();
+    for (const RigidPlaten& platen : platens.platens())
+      list.push_back({{"boundary", platen.boundary},
+                      {"component", platen.component},
+                      {"area", platen.area},
+                      {"unknown", platen.master}});
+    summary["platens"] = list;
+  }
   probe_csv.describe(summary);
   const nlohmann::json carried =
       resume ? nlohmann::json::parse(resume->record) : nlohmann::json::object();
@@ -346,6 +361,17 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
       nlohmann::json r = nlohmann::json::object();
       for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
       o["reactions"] = r;
+    }
+    if (platen_csv) {
+      nlohmann::json r = nlohmann::json::object();
+      for (std::size_t k = 0; k < platens.platens().size(); ++k) {
+        const RigidPlaten& platen = platens.platens()[k];
+        const double w = y[static_cast<std::size_t>(platen.master)];
+        const double force = platens.force(k, t);
+        platen_csv->write(t, platen.boundary, w, force);
+        r[platen.boundary] = {{"displacement", w}, {"force", force}};
+      }
+      o["platens"] = r;
     }
     if (balance) {
       const VolumeBalanceRecord& vb = balance->record();

@@ -60,9 +60,9 @@ std::string default_output_folder(const std::string& case_path,
 
 const std::vector<std::string>& OutputFolder::run_files() {
   static const std::vector<std::string> files{
-      "summary.json",    "line.csv",          "reactions.csv",  "fields.h5",
-      "fields.xdmf",     "steps.csv",         "checkpoint.bin", "summary.json.tmp",
-      "fields.xdmf.tmp", "checkpoint.bin.tmp"};
+      "summary.json",     "line.csv",        "reactions.csv",     "platens.csv",
+      "fields.h5",        "fields.xdmf",     "steps.csv",         "checkpoint.bin",
+      "summary.json.tmp", "fields.xdmf.tmp", "checkpoint.bin.tmp"};
   return files;
 }
 

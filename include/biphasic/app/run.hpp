@@ -33,8 +33,9 @@ Mesh build_mesh(const Config& config, const std::string& output_dir, bool* from_
 ///   line.csv      pressure and displacement on the probe line at each output time
 ///   fields.h5 / fields.xdmf   u on P2 nodes and p (ParaView, Tetrahedron_10)
 ///   reactions.csv t, boundary, Fx, Fy, Fz of each boundary in output.reactions [s, N]
+///   platens.csv   t, platen, displacement, force of each rigid platen [s, mm, N]
 ///   summary.json  resolved configuration, mesh size, per-step records, outputs (line
-///                 measures, reactions), counters, timings
+///                 measures, reactions, platens), counters, timings
 /// The folder is locked for the run and must not hold an earlier run unless options.overwrite
 /// (see OutputFolder); its problems throw OutputFolderError before any work. Every write is
 /// checked: a failed one stops the run with std::runtime_error naming file and cause, and the

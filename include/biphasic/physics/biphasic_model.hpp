@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "biphasic/material/material_laws.hpp"
+#include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
 namespace biphasic {
@@ -39,6 +40,8 @@ class BiphasicModel : public SemidiscreteSystem {
   virtual double gls_coefficient(Index e) const = 0;
   /// The material laws of element e.
   virtual const MaterialLaws& laws_of(Index e) const = 0;
+  /// The rigid platens under a prescribed force (empty without rigid_platen conditions).
+  virtual const RigidPlatens& platens() const = 0;
 };
 
 }  // namespace biphasic

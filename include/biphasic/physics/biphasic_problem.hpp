@@ -64,7 +64,7 @@ class BiphasicProblem final : public BiphasicModel {
   /// a rigid platen (s·(u_i − u_m) = 0).
   const std::vector<char>& constrained() const override { return constrained_; }
   /// The rigid platens under a prescribed force (physics/rigid_platen.hpp).
-  const RigidPlatens& platens() const { return platens_; }
+  const RigidPlatens& platens() const override { return platens_; }
 
   /// F(t, y, ẏ): momentum rows [N], mass rows [mm³/s], Dirichlet rows s·(y − ḡ(t)).
   void residual(double t, const double* y, const double* ydot, double* F) override;

@@ -62,7 +62,7 @@ class SectionProblem final : public BiphasicModel {
   SectionModel model() const { return model_; }
   const SparsityPattern& pattern() const override { return pattern_; }
   /// The rigid platens under a prescribed force (physics/rigid_platen.hpp).
-  const RigidPlatens& platens() const { return platens_; }
+  const RigidPlatens& platens() const override { return platens_; }
   const std::vector<char>& constrained() const override { return constrained_; }
 
   void residual(double t, const double* y, const double* ydot, double* F) override;
