@@ -156,12 +156,13 @@ def main():
         w.writerow(["t"] + [f"change_{n}" for n in names])
         for t in sorted(changes):
             w.writerow([t] + [changes[t].get(n, "") for n in names])
-    print("| cells | rtol | ratio | unknowns | wall [s] | vs finest: t = 32 s | t <= 1 s | max over t |"
-          " vs next: t = 32 s | t <= 1 s | max over t |")
+    print("| cells | rtol | ratio | unknowns | wall [s] | vs finest: t = 32 s | t <= 1 s |"
+          " max over t | vs next: t = 32 s | t <= 1 s | max over t |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     pct = lambda v: "n/a" if v != v else f"{100 * v:.3g} %"
     for r in rows:
-        print(f"| {r['nr']} x {r['nz']} | {r['rtol']:g} | {r['ratio']:g} | {r['unknowns']} | {r['wall_s']} | "
+        print(f"| {r['nr']} x {r['nz']} | {r['rtol']:g} | {r['ratio']:g} | {r['unknowns']} | "
+              f"{r['wall_s']} | "
               f"{pct(r['finest_t32'])} | {pct(r['finest_t_le_1'])} | {pct(r['finest_max'])} | "
               f"{pct(r['next_t32'])} | {pct(r['next_t_le_1'])} | {pct(r['next_max'])} |")
 

@@ -391,9 +391,9 @@ def check_reference(run, base, reference, label):
     ref_cfg = with_overrides(reference.toml, overrides)
     diff = physical_differences(run_cfg, ref_cfg)
     if diff:
-        raise StudyError(f"run {run['dir']}: the {label} {reference.path.name} does not describe the "
-                         "run's physical problem (a physical parameter of the run cannot be applied "
-                         "to it): " + "; ".join(diff))
+        raise StudyError(f"run {run['dir']}: the {label} {reference.path.name} does not "
+                         "describe the run's physical problem (a physical parameter of the run "
+                         "cannot be applied to it): " + "; ".join(diff))
 
 
 # ---- measures ------------------------------------------------------------------------------
