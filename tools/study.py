@@ -323,9 +323,16 @@ def physical_problem(cfg):
                 _num(mesh.get("height", defaults.get("mesh.height", 8.0))))
     elif not section and source == "quarter_cylinder":
         body = ("quarter cylinder without symmetry conditions on symmetry_x and symmetry_y",)
-    else:
-        body = (model, source, _plain({k: v for k, v in mesh.items()
-                                       if k in ("file", "section", "column")}))
+    elif source == "section":
+        sec = mesh.get("section", {})
+        body = (model, "rectangle", _num(sec.get("width", defaults.get("mesh.section.width"))),
+                _num(sec.get("height", defaults.get("mesh.section.height"))))
+    elif source == "column":
+        col = mesh.get("column", {})
+        body = (model, "column") + tuple(_num(col.get(k, defaults.get(f"mesh.column.{k}")))
+                                         for k in ("width", "depth", "height"))
+    else:  # a mesh file, or another generator: the same only if the same source and file
+        body = (model, source, mesh.get("file", ""))
     out = {"body": body}
     material = {k.split(".", 1)[1]: v for k, v in defaults.items() if k.startswith("material.")}
     material.update(cfg.get("material", {}))
