@@ -46,11 +46,18 @@ def num(row, key):
 
 
 def line_at(run_dir, t=None):
-    """(z, p, uz) on the line at time t (default: the last output)."""
+    """(z, p, uz) on the line at time t (default: the last output); z and uz are the axial
+    coordinate and displacement (y and uy of a section model such as the axisymmetric
+    reference)."""
     data = {}
+    try:
+        model = json.loads((pathlib.Path(run_dir) / "summary.json").read_text())["model"]
+    except (OSError, ValueError, KeyError):
+        model = "three_dimensional"
+    z, uz = ("y", "uy") if model in ("axisymmetric", "plane_strain") else ("z", "uz")
     with open(pathlib.Path(run_dir) / "line.csv") as f:
         for r in csv.DictReader(f):
-            data.setdefault(float(r["t"]), []).append((float(r["z"]), float(r["p"]), float(r["uz"])))
+            data.setdefault(float(r["t"]), []).append((float(r[z]), float(r["p"]), float(r[uz])))
     times = sorted(data)
     key = times[-1] if t is None else min(times, key=lambda x: abs(x - t))
     pts = sorted(data[key])

@@ -3,13 +3,15 @@
 skipping runs already done, into one tidy CSV table (one row per run).
 
 usage: tools/study.py STUDY.toml [-o DIR] [--jobs N] [--dry-run] [--retry-failed]
+                      [--skip-reference-check]
 
 A study file (TOML, see docs/studies.md):
 
     title = "Time-step sensitivity, mesh 1"
     base = "../paper/mesh1_k1e-3_gls.toml"     # relative to the study file
     set = { "output.fields" = false }          # overrides for every run (optional)
-    reference = "reference.toml"               # optional: reference case for the discrepancy
+    reference = "reference_axisymmetric.toml"  # optional: reference case for the discrepancy
+    reference_check = "reference.toml"         # optional: a second reference, for a cross-check
 
     [[sweep]]                                  # a study is the union of its sweeps
     name = "be"
@@ -24,11 +26,20 @@ Keys of `set` and `vary` are case-file keys (anything `biphasic run --set` takes
                  first-step overshoot of a stability map
 
 Each run writes to DIR/runs/<sweep>/<parameters>/ (summary.json, line.csv, log.txt) and the
-table to DIR/runs.csv. Reference solutions (one per permeability, loading rate and strain) are
-computed once from the reference case and cached in results/references/ (shared by studies;
-BIPHASIC_REFERENCE_CACHE=DIR puts the cache elsewhere). BIPHASIC_BIN=PATH runs another build.
+table to DIR/runs.csv. Reference solutions (one per physical problem: material, loading rate
+and strain) are computed once from the reference case and cached in results/references/
+(shared by studies; BIPHASIC_REFERENCE_CACHE=DIR puts the cache elsewhere). The run's physical
+parameters (every material.* key, loading.rate, loading.strain) are applied to the reference;
+before any run, the runner checks that the reference then describes the run's physical problem
+(geometry, material, the conditions on top, bottom and lateral faces and their load histories,
+the probe line), across models (a 3-D quarter cylinder against an axisymmetric section), and
+stops naming every difference otherwise. With reference_check, the rows also hold the
+discrepancy against the second reference (discrepancy_check, discrepancy_check_max);
+--skip-reference-check leaves it out. BIPHASIC_BIN=PATH runs another build.
 """
 import argparse
+import bisect
+import copy
 import csv
 import functools
 import hashlib
@@ -41,6 +52,7 @@ import shutil
 import subprocess
 import sys
 import time
+import math
 import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -48,9 +60,16 @@ BIN = pathlib.Path(os.environ.get("BIPHASIC_BIN", ROOT / "build" / "biphasic"))
 REFERENCE_CACHE = pathlib.Path(os.environ.get("BIPHASIC_REFERENCE_CACHE",
                                               ROOT / "results" / "references"))
 PAPER_MESH_LC = {1: 1.3, 2: 0.98, 3: 0.73, 4: 0.57}
-# Parameters that define the physical problem (the reference depends on them only).
-PHYSICAL_KEYS = ("material.permeability", "material.lambda", "material.mu", "loading.rate",
-                 "loading.strain")
+# Parameters that define the physical problem (the reference depends on them only): every
+# material key (the same in every model) and the derived loading keys.
+LOADING_KEYS = ("loading.rate", "loading.strain")
+SECTION_MODELS = ("axisymmetric", "plane_strain")
+# The quarter cylinder's symmetry planes: what the axis of an axisymmetric section implies.
+QUARTER_SYMMETRY = ("symmetry_x", "symmetry_y")
+
+
+def is_physical(key):
+    return key.startswith("material.") or key in LOADING_KEYS
 
 
 class StudyError(Exception):
@@ -86,7 +105,11 @@ class BaseCase:
         except (OSError, tomllib.TOMLDecodeError) as e:
             raise StudyError(f"{path}: {e}")
         mesh = self.toml.get("mesh", {})
-        self.height = float(mesh.get("height", 8.0))
+        self.model = self.toml.get("model", "three_dimensional")
+        if self.model in SECTION_MODELS:
+            self.height = float(mesh.get("section", {}).get("height", 8.0))
+        else:
+            self.height = float(mesh.get("height", 8.0))
         self.top = None
         for i, bc in enumerate(self.toml.get("boundary", [])):
             if bc.get("name") == "top" and bc.get("type") == "displacement":
@@ -151,9 +174,9 @@ def load_study(path):
     except (OSError, tomllib.TOMLDecodeError) as e:
         raise StudyError(f"{path}: {e}")
     for key in study:
-        if key not in ("title", "base", "set", "reference", "sweep", "output"):
-            raise StudyError(f"{path}: unknown key '{key}' (title, base, set, reference, sweep, "
-                             "output)")
+        if key not in ("title", "base", "set", "reference", "reference_check", "sweep", "output"):
+            raise StudyError(f"{path}: unknown key '{key}' (title, base, set, reference, "
+                             "reference_check, sweep, output)")
     if "base" not in study:
         raise StudyError(f"{path}: 'base' (the base case file) is missing")
     base = BaseCase((path.parent / study["base"]).resolve())
@@ -184,12 +207,16 @@ def load_study(path):
             runs.append({"sweep": name, "params": params, "fixed": fixed,
                          "overrides": expand(fixed, base, where),
                          "dir": f"{name}/{slug(params)}"})
-    reference = None
-    if "reference" in study:
-        reference = BaseCase((path.parent / study["reference"]).resolve())
-        if not reference.path.is_file():
-            raise StudyError(f"{path}: reference = '{study['reference']}': no such file")
-    return study, base, runs, reference
+    references = {}
+    for key in ("reference", "reference_check"):
+        if key in study:
+            ref_path = (path.parent / study[key]).resolve()
+            if not ref_path.is_file():
+                raise StudyError(f"{path}: {key} = '{study[key]}': no such file")
+            references[key] = BaseCase(ref_path)
+    if "reference_check" in references and "reference" not in references:
+        raise StudyError(f"{path}: reference_check needs a reference")
+    return study, base, runs, references
 
 
 def set_args(overrides):
@@ -208,18 +235,197 @@ def validate(base, runs):
             raise StudyError(f"run {run['dir']}: {(r.stderr or r.stdout).strip()}")
 
 
+# ---- the physical problem of a case ---------------------------------------------------------
+
+@functools.lru_cache(maxsize=None)
+def schema_defaults():
+    """{key: default} of the case file's plain keys, read from `biphasic schema`."""
+    if not BIN.is_file():
+        raise StudyError(f"{BIN} not found; build first (tools/build.sh)")
+    r = subprocess.run([str(BIN), "schema"], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise StudyError(f"{BIN} schema: {(r.stderr or r.stdout).strip()}")
+    out = {}
+    for line in r.stdout.splitlines():
+        m = re.match(r"\| `([a-z_.]+)` \| [^|]* \| `([^`]*)` \|", line)
+        if m:
+            try:
+                out[m.group(1)] = tomllib.loads(f"v = {m.group(2)}")["v"]
+            except tomllib.TOMLDecodeError:
+                pass
+    return out
+
+
+def with_overrides(toml, overrides):
+    """A case-file dict with `--set` overrides (KEY = a.b, a[i].b) applied."""
+    cfg = copy.deepcopy(toml)
+    for key, value in overrides.items():
+        node = cfg
+        parts = key.split(".")
+        for i, part in enumerate(parts):
+            last = i == len(parts) - 1
+            m = re.fullmatch(r"(\w+)\[(\d+)\]", part)
+            if m:
+                items = node.setdefault(m.group(1), [])
+                index = int(m.group(2))
+                while len(items) <= index:
+                    items.append({})
+                if last:
+                    items[index] = value
+                else:
+                    node = items[index]
+            elif last:
+                node[part] = value
+            else:
+                node = node.setdefault(part, {})
+    return cfg
+
+
+def _num(v):
+    return float(f"{float(v):.12g}")
+
+
+def _plain(v):
+    """Numbers rounded to 12 digits (a case file's 1e-3 and a summary's 0.001 alike)."""
+    if isinstance(v, bool) or isinstance(v, str):
+        return v
+    if isinstance(v, (int, float)):
+        return _num(v)
+    if isinstance(v, (list, tuple)):
+        return tuple(_plain(x) for x in v)
+    if isinstance(v, dict):
+        return tuple(sorted((k, _plain(x)) for k, x in v.items()))
+    return v
+
+
+def physical_problem(cfg):
+    """The physical problem a configuration describes (a case file with its overrides, or the
+    resolved configuration of a summary.json), in terms a 3-D quarter cylinder and an
+    axisymmetric section share: {item: value}. Items: the body (a cylinder (radius, height) for
+    both), the material (every key, defaults filled in), each condition with its name, type,
+    component ('axial' for z in 3-D and y in a section) and load history (the curve's points
+    scaled by the value), body force, fluid source, regions, and the probe line's ends as
+    (r, axial). The quarter cylinder's symmetry conditions on symmetry_x and symmetry_y are what
+    the axis of the axisymmetric section holds: they are part of its body, not conditions."""
+    defaults = schema_defaults()
+    model = cfg.get("model", defaults.get("model", "three_dimensional"))
+    section = model in SECTION_MODELS
+    mesh = cfg.get("mesh", {})
+    source = mesh.get("source", defaults.get("mesh.source", "quarter_cylinder"))
+    bcs = cfg.get("boundary", [])
+    symmetry = {b.get("name") for b in bcs if b.get("type") == "symmetry"}
+    if model == "axisymmetric" and source == "section":
+        sec = mesh.get("section", {})
+        body = ("cylinder", _num(sec.get("width", defaults.get("mesh.section.width", 18.0))),
+                _num(sec.get("height", defaults.get("mesh.section.height", 8.0))))
+    elif not section and source == "quarter_cylinder" and set(QUARTER_SYMMETRY) <= symmetry:
+        body = ("cylinder", _num(mesh.get("radius", defaults.get("mesh.radius", 18.0))),
+                _num(mesh.get("height", defaults.get("mesh.height", 8.0))))
+    elif not section and source == "quarter_cylinder":
+        body = ("quarter cylinder without symmetry conditions on symmetry_x and symmetry_y",)
+    elif source == "section":
+        sec = mesh.get("section", {})
+        body = (model, "rectangle", _num(sec.get("width", defaults.get("mesh.section.width"))),
+                _num(sec.get("height", defaults.get("mesh.section.height"))))
+    elif source == "column":
+        col = mesh.get("column", {})
+        body = (model, "column") + tuple(_num(col.get(k, defaults.get(f"mesh.column.{k}")))
+                                         for k in ("width", "depth", "height"))
+    else:  # a mesh file, or another generator: the same only if the same source and file
+        body = (model, source, mesh.get("file", ""))
+    out = {"body": body}
+    material = {k.split(".", 1)[1]: v for k, v in defaults.items() if k.startswith("material.")}
+    material.update(cfg.get("material", {}))
+    for k, v in material.items():
+        out[f"material.{k}"] = _plain(v)
+    curves = cfg.get("curves", {})
+    axial = "y" if section else "z"
+    conditions = []
+    for b in bcs:
+        name, kind = b.get("name"), b.get("type")
+        if not section and kind == "symmetry" and name in QUARTER_SYMMETRY:
+            continue
+        comp = b.get("component")
+        if comp == axial:
+            comp = "axial"
+        value = b.get("value", b.get("vector"))
+        curve = b.get("curve", "")
+        if curve and value is not None:
+            points = curves.get(curve)
+            scaled = ((lambda y: tuple(_num(v * y) for v in value)) if isinstance(value, list)
+                      else (lambda y: _num(value * y)))
+            history = (tuple((_num(tp), scaled(y)) for tp, y in points)
+                       if points is not None else f"curve '{curve}' missing")
+        else:
+            history = _plain(value)
+        conditions.append((name, kind, comp or "", history))
+    for name, kind, comp, history in sorted(conditions, key=repr):
+        key = f"condition {kind} on '{name}'" + (f" ({comp})" if comp else "")
+        out[key] = out.get(key, ()) + (history,)
+    force = cfg.get("body_force", {})
+    for c in ("x", "y", "z"):
+        f = str(force.get(c, "0")).strip()
+        if f != "0":
+            out[f"body_force.{'axial' if c == axial else c} ({model})"] = f
+    source_term = str(cfg.get("fluid_source", {}).get("value", "0")).strip()
+    if source_term != "0":
+        out[f"fluid_source.value ({model})"] = source_term
+    if cfg.get("region"):
+        out["regions"] = _plain(cfg["region"])
+    output = cfg.get("output", {})
+    ends = []
+    for key in ("line_start", "line_end"):
+        x, y, z = output.get(key, defaults.get(f"output.{key}", [0.0, 0.0, 0.0]))
+        ends.append((_num(x), _num(y)) if section else (_num(math.hypot(x, y)), _num(z)))
+    out["probe line (r, axial)"] = tuple(ends)
+    return out
+
+
+def physical_differences(run_cfg, ref_cfg):
+    """What differs between the physical problems of a run and of its reference (empty: the
+    same problem)."""
+    a, b = physical_problem(run_cfg), physical_problem(ref_cfg)
+    missing = "(none)"
+    return [f"{k}: run {a.get(k, missing)}, reference {b.get(k, missing)}"
+            for k in sorted(set(a) | set(b), key=str) if a.get(k, missing) != b.get(k, missing)]
+
+
+def check_reference(run, base, reference, label):
+    """Stops the study if the reference, with the run's physical parameters applied, does not
+    describe the run's physical problem."""
+    physical, overrides = reference_overrides(run, base, reference)
+    run_cfg = with_overrides(base.toml, run["overrides"])
+    ref_cfg = with_overrides(reference.toml, overrides)
+    diff = physical_differences(run_cfg, ref_cfg)
+    if diff:
+        raise StudyError(f"run {run['dir']}: the {label} {reference.path.name} does not "
+                         "describe the run's physical problem (a physical parameter of the run "
+                         "cannot be applied to it): " + "; ".join(diff))
+
+
 # ---- measures ------------------------------------------------------------------------------
+
+def axial_column(line_csv):
+    """The line.csv column of the axial coordinate: y in a section model (x = r, y = z), else
+    z. The model is read from the run's summary.json next to the file."""
+    try:
+        model = json.loads((pathlib.Path(line_csv).parent / "summary.json").read_text())["model"]
+    except (OSError, ValueError, KeyError):
+        model = "three_dimensional"
+    return "y" if model in SECTION_MODELS else "z"
+
 
 @functools.lru_cache(maxsize=None)
 def read_line(path):
-    """{t: (z list, p list)} from a line.csv (cached: a reference serves many runs; callers do
-    not modify the result)."""
+    """{t: (z list, p list)} from a line.csv, z the axial coordinate (cached: a reference serves
+    many runs; callers do not modify the result)."""
     out = {}
+    axial = axial_column(path)
     with open(path) as f:
         for row in csv.DictReader(f):
             t = round(float(row["t"]), 9)
             out.setdefault(t, ([], []))
-            out[t][0].append(float(row["z"]))
+            out[t][0].append(float(row[axial]))
             out[t][1].append(float(row["p"]))
     for t, (z, p) in out.items():
         order = sorted(range(len(z)), key=lambda i: z[i])
@@ -228,13 +434,14 @@ def read_line(path):
 
 
 def interpolate(x, xs, ys):
+    """Piecewise-linear ys(x) on sorted xs (constant beyond the ends)."""
     if x <= xs[0]:
         return ys[0]
-    for i in range(1, len(xs)):
-        if x <= xs[i]:
-            w = (x - xs[i - 1]) / (xs[i] - xs[i - 1]) if xs[i] > xs[i - 1] else 0.0
-            return ys[i - 1] + w * (ys[i] - ys[i - 1])
-    return ys[-1]
+    i = bisect.bisect_left(xs, x)
+    if i >= len(xs):
+        return ys[-1]
+    w = (x - xs[i - 1]) / (xs[i] - xs[i - 1]) if xs[i] > xs[i - 1] else 0.0
+    return ys[i - 1] + w * (ys[i] - ys[i - 1])
 
 
 def vertices(z, p):
@@ -277,7 +484,8 @@ def midheight_error(run_line, ref_line):
     return None
 
 
-def row_for(run, run_dir, study_name, reference_info, rss_gb):
+def row_for(run, run_dir, study_name, reference_infos, rss_gb):
+    """One table row; reference_infos: {"reference" or "reference_check": (dir, label)}."""
     s = json.loads((run_dir / "summary.json").read_text())
     cfg, c, tm = s["configuration"], s["counters"], s["timings"]
     outs = [o for o in s["outputs"] if o["t"] > 0]
@@ -311,6 +519,8 @@ def row_for(run, run_dir, study_name, reference_info, rss_gb):
         "undershoot_max": peak("undershoot"), "oscillation": last.get("oscillation"),
         "oscillation_max": peak("oscillation"),
         "discrepancy": None, "discrepancy_max": None, "midheight_error": None, "reference": None,
+        **({"discrepancy_check": None, "discrepancy_check_max": None, "reference_check": None}
+           if "reference_check" in reference_infos else {}),
         "wall_s": tm["wall"], "peak_rss_gb": rss_gb,
         "steps": c["steps"], "newton_iterations": c["newton_iterations"],
         "residual_evaluations": c["residual_evaluations"],
@@ -319,16 +529,29 @@ def row_for(run, run_dir, study_name, reference_info, rss_gb):
         "error_test_failures": c.get("error_test_failures"),
         "nonlinear_failures": c.get("nonlinear_failures"),
     }
-    if reference_info and (run_dir / "line.csv").is_file():
-        ref_dir, label = reference_info
+    for which, (ref_dir, label) in reference_infos.items():
+        if not (run_dir / "line.csv").is_file():
+            continue
+        # The resolved configurations of both: the reference must be the run's problem.
+        ref_cfg = json.loads((ref_dir / "summary.json").read_text())["configuration"]
+        diff = physical_differences(cfg, ref_cfg)
+        if diff:
+            row["reference_mismatch"] = f"{which}: " + "; ".join(diff)
+            continue
         run_line, ref_line = read_line(run_dir / "line.csv"), read_line(ref_dir / "line.csv")
         d = discrepancy(run_line, ref_line)
-        if d:
-            final = max(d)
+        if not d:
+            continue
+        final = max(d)
+        if which == "reference":
             row["discrepancy"] = d[final]
             row["discrepancy_max"] = max(d.values())
             row["midheight_error"] = midheight_error(run_line, ref_line)
             row["reference"] = label
+        else:
+            row["discrepancy_check"] = d[final]
+            row["discrepancy_check_max"] = max(d.values())
+            row["reference_check"] = label
     return row
 
 
@@ -336,7 +559,7 @@ def row_for(run, run_dir, study_name, reference_info, rss_gb):
 
 def reference_overrides(run, base, reference):
     """The physical parameters of a run, applied to the reference case."""
-    physical = {k: v for k, v in run["fixed"].items() if k in PHYSICAL_KEYS}
+    physical = {k: v for k, v in run["fixed"].items() if is_physical(k)}
     rate, strain = base.default_loading()
     physical.setdefault("loading.rate", round(rate, 12))
     physical.setdefault("loading.strain", round(strain, 12))
@@ -352,7 +575,7 @@ def reference_label(reference, physical, ref_dir):
     s = json.loads((ref_dir / "summary.json").read_text())
     k = s["configuration"]["material"]["permeability"]
     where = ref_dir.relative_to(ROOT) if ref_dir.is_relative_to(ROOT) else ref_dir
-    return (f"{reference.path.name} (k={k}, {s['mesh']['unknowns']} unknowns, "
+    return (f"{reference.path.name} ({s['model']}, k={k}, {s['mesh']['unknowns']} unknowns, "
             f"{s['configuration']['time']['integrator']}) {where}")
 
 
@@ -421,9 +644,17 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--dry-run", action="store_true", help="list the runs and stop")
     ap.add_argument("--retry-failed", action="store_true", help="rerun runs that failed before")
+    ap.add_argument("--skip-reference-check", action="store_true",
+                    help="do not compute or measure against the study's reference_check")
     args = ap.parse_args()
     try:
-        study, base, runs, reference = load_study(args.study.resolve())
+        study, base, runs, references = load_study(args.study.resolve())
+        if args.skip_reference_check:
+            references.pop("reference_check", None)
+        # Every run's physical problem must reach each reference (pure Python, before any run).
+        for which, reference in references.items():
+            for r in runs:
+                check_reference(r, base, reference, which.replace("_", " "))
     except StudyError as e:
         sys.exit(f"study: {e}")
     name = args.study.stem
@@ -436,28 +667,27 @@ def main():
         for r in runs:
             print(f"  {r['dir']}: {' '.join(f'{k}={toml_value(v)}' for k, v in r['overrides'].items())}")
         return
-    try:
-        validate(base, runs)
-        if reference:
-            validate(reference, [{"dir": "reference", "overrides": reference_overrides(r, base, reference)[1]}
-                                 for r in runs[:1]])
-    except StudyError as e:
-        sys.exit(f"study {args.study}: {e}")
-
     # References first (each once; cached across studies).
     refs = {}
     todo_refs = []
-    if reference:
+    for which, reference in references.items():
         for r in runs:
             physical, overrides = reference_overrides(r, base, reference)
             key = reference_key(reference, physical)
-            r["reference_key"] = key
+            r.setdefault("reference_keys", {})[which] = key
             if key in refs:
                 continue
             ref_dir = REFERENCE_CACHE / key
-            refs[key] = (ref_dir, physical)
-            if completed(ref_dir, overrides) != "completed":
-                todo_refs.append((key, ref_dir, overrides))
+            refs[key] = (ref_dir, physical, reference, overrides)
+    try:
+        validate(base, runs)
+        for key, (ref_dir, physical, reference, overrides) in refs.items():
+            validate(reference, [{"dir": f"reference {key}", "overrides": overrides}])
+    except StudyError as e:
+        sys.exit(f"study {args.study}: {e}")
+    for key, (ref_dir, physical, reference, overrides) in refs.items():
+        if completed(ref_dir, overrides) != "completed":
+            todo_refs.append((key, ref_dir, reference, overrides))
 
     todo = [r for r in runs
             if completed(out / "runs" / r["dir"], r["overrides"]) not in
@@ -475,7 +705,7 @@ def main():
 
     if todo_refs:
         pool = Pool(args.jobs, len(todo_refs))
-        for key, ref_dir, overrides in todo_refs:
+        for key, ref_dir, reference, overrides in todo_refs:
             if ref_dir.exists():
                 shutil.rmtree(ref_dir)
             cmd = [str(BIN), "run", str(reference.path), "-o", str(ref_dir)] + \
@@ -496,14 +726,14 @@ def main():
     rows = []
     for r in runs:
         run_dir = out / "runs" / r["dir"]
-        info = None
-        if reference and r.get("reference_key"):
-            ref_dir, physical = refs[r["reference_key"]]
+        infos = {}
+        for which, key in r.get("reference_keys", {}).items():
+            ref_dir, physical, reference, _ = refs[key]
             if (ref_dir / "summary.json").is_file():
-                info = (ref_dir, reference_label(reference, physical, ref_dir))
+                infos[which] = (ref_dir, reference_label(reference, physical, ref_dir))
         try:
             peak = json.loads((run_dir / "run.json").read_text()).get("peak_rss_gb")
-            rows.append(row_for(r, run_dir, name, info, peak))
+            rows.append(row_for(r, run_dir, name, infos, peak))
         except (OSError, ValueError, KeyError) as e:
             rows.append({"study": name, "sweep": r["sweep"], "run": r["dir"], "status": "missing",
                          **{f"param:{k}": v for k, v in r["params"].items()}})
@@ -522,7 +752,11 @@ def main():
     failed = [row["run"] for row in rows if row.get("status") != "completed"]
     print(f"table: {out / 'runs.csv'} ({len(rows)} rows"
           + (f"; not completed: {', '.join(failed)}" if failed else "") + ")")
-    if failed:
+    mismatched = [row for row in rows if row.get("reference_mismatch")]
+    for row in mismatched:
+        print(f"  {row['run']}: not measured, the reference is another problem: "
+              f"{row['reference_mismatch']}", file=sys.stderr)
+    if failed or mismatched:
         sys.exit(1)
 
 
