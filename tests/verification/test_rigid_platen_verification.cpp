@@ -8,7 +8,10 @@
 // - Confined creep (Terzaghi's degree of consolidation U(T)): a column under a constant platen
 //   force settles as (q H / H_A) U(T); axisymmetric and tetrahedral.
 // The loads are small (strain ~1e-3), where the finite-strain model agrees with the linear
-// theory to ~1e-3 relative.
+// theory to ~1e-3 relative. With $BIPHASIC_VERIFICATION_OUT set, writes mandel/<label>_centre.csv
+// (T, centre p/σ₀ and series at every output), mandel/<label>_profiles.csv (T, x/a, p/σ₀ and
+// series on the midplane at the checked times) and confined_creep/<label>.csv (T, settlement
+// over the final one, computed and series) for tools/verification/plot_rigid_platen.py.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +19,7 @@
 #include <iostream>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +31,7 @@
 #include "biphasic/physics/section_problem.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
+#include "verification_support.hpp"
 
 namespace biphasic {
 namespace {
@@ -87,6 +92,12 @@ MandelResult mandel(Integrator integrator) {
     if (mesh.nodes[static_cast<std::size_t>(v)][1] == 0.0) bottom.push_back(v);
   const std::vector<double> checked{0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0};  // T
   MandelResult out;
+  const std::string label = integrator == Integrator::Bdf ? "bdf" : "backward_euler";
+  std::optional<verification::CsvWriter> centre_csv, profile_csv;
+  if (const auto dir = verification::verification_output("mandel")) {
+    centre_csv.emplace(*dir / (label + "_centre.csv"), "T,p_computed,p_series");
+    profile_csv.emplace(*dir / (label + "_profiles.csv"), "T,x_over_a,p_computed,p_series");
+  }
   std::vector<double> y(static_cast<std::size_t>(problem.size()), 0.0);
   auto integ = integrator_for(problem, cfg);
   integ->run(
@@ -100,6 +111,10 @@ MandelResult mandel(Integrator integrator) {
         out.centre_peak =
             std::max(out.centre_peak,
                      ys[static_cast<std::size_t>(problem.pattern().p_dof(centre))] / kSigma0);
+        if (centre_csv)
+          centre_csv->row(T,
+                          ys[static_cast<std::size_t>(problem.pattern().p_dof(centre))] / kSigma0,
+                          analytic::mandel_pressure(nu, 0.0, T));
         const double reaction = problem.reactions({"top"}, info.t, ys.data(), ydots.data())[0][1];
         out.force_error = std::max(out.force_error, std::abs(reaction - force) / std::abs(force));
         if (std::none_of(checked.begin(), checked.end(),
@@ -109,8 +124,9 @@ MandelResult mandel(Integrator integrator) {
         for (Index v : bottom) {
           const double x = mesh.nodes[static_cast<std::size_t>(v)][0];
           const double p = ys[static_cast<std::size_t>(problem.pattern().p_dof(v))];
-          worst = std::max(worst,
-                           std::abs(p / kSigma0 - analytic::mandel_pressure(nu, x / kMandelA, T)));
+          const double series = analytic::mandel_pressure(nu, x / kMandelA, T);
+          worst = std::max(worst, std::abs(p / kSigma0 - series));
+          if (profile_csv) profile_csv->row(T, x / kMandelA, p / kSigma0, series);
         }
         std::cout << name_of(integrator) << " T = " << T << ": centre p/sigma0 = "
                   << ys[static_cast<std::size_t>(problem.pattern().p_dof(centre))] / kSigma0
@@ -167,8 +183,11 @@ struct CreepResult {
 
 /// `settlement(ys)` [mm, positive down], `reactions(t, ys, ydots)` = (top, bottom) axial [N].
 template <class Problem, class Settlement, class Reactions>
-CreepResult run_creep(Problem& problem, const Config& cfg, double force, Settlement settlement,
-                      Reactions reactions) {
+CreepResult run_creep(const std::string& label, Problem& problem, const Config& cfg, double force,
+                      Settlement settlement, Reactions reactions) {
+  std::optional<verification::CsvWriter> csv;
+  if (const auto dir = verification::verification_output("confined_creep"))
+    csv.emplace(*dir / (label + ".csv"), "T,settlement_computed,settlement_series");
   const double t_unit = kCreepH * kCreepH / (kCreepK * kHA);
   const double final_settlement = kCreepQ * kCreepH / kHA;
   const std::vector<double> checked{0.01, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0};
@@ -182,6 +201,9 @@ CreepResult run_creep(Problem& problem, const Config& cfg, double force, Settlem
         out.force_error = std::max(out.force_error, std::abs(top - force) / std::abs(force));
         out.imbalance = std::max(out.imbalance, std::abs(top + bottom) / std::abs(force));
         const double T = info.t / t_unit;
+        if (csv)
+          csv->row(T, settlement(ys) / final_settlement,
+                   analytic::terzaghi_degree_of_consolidation(T));
         if (std::none_of(checked.begin(), checked.end(),
                          [&](double Tc) { return std::abs(Tc - T) < 1e-9; }))
           return;
@@ -226,6 +248,7 @@ CreepResult axisymmetric_creep(Integrator integrator) {
   SectionProblem problem(mesh, SectionModel::Axisymmetric, cfg);
   const Index master = problem.platens().platens().at(0).master;
   return run_creep(
+      std::string("axisymmetric_") + (integrator == Integrator::Bdf ? "bdf" : "backward_euler"),
       problem, cfg, force, [&](const std::vector<double>& ys) { return -ys[master]; },
       [&](double t, const std::vector<double>& ys, const std::vector<double>& ydots) {
         const auto r = problem.reactions({"top", "bottom"}, t, ys.data(), ydots.data());
@@ -264,7 +287,8 @@ TEST(RigidPlatenCreep, TetrahedralBdfSettlementFollowsTerzaghi) {
   BiphasicProblem problem(mesh, cfg);
   const Index master = problem.platens().platens().at(0).master;
   const CreepResult r = run_creep(
-      problem, cfg, force, [&](const std::vector<double>& ys) { return -ys[master]; },
+      "tetrahedral_bdf", problem, cfg, force,
+      [&](const std::vector<double>& ys) { return -ys[master]; },
       [&](double t, const std::vector<double>& ys, const std::vector<double>& ydots) {
         const auto rs = problem.reactions({"z1", "z0"}, t, ys.data(), ydots.data());
         return std::pair{rs[0][2], rs[1][2]};
