@@ -412,8 +412,8 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
     int sub_steps = 0;
     while (t < t_out) {
       const double h = std::ldexp(m.time.dt, -level);
-      // Land exactly on the output time (round-off of t + h included).
-      const double t_next = t + h >= t_out - 1e-9 * h ? t_out : t + h;
+      // Land exactly on the output time (round-off of t + h, or a sliver, included).
+      const double t_next = t + h >= t_out - kSliverFraction * h ? t_out : t + h;
       const std::string reason = solve_step(t, t_next, iterations);
       if (!reason.empty()) {
         if (level >= newton.max_cutbacks || fatal) {

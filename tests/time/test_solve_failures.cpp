@@ -37,8 +37,10 @@ bool contains(const std::string& text, const std::string& part) {
 
 TEST(StepCount, IsComputedBeyondTheRangeOfInt) {
   EXPECT_EQ(interval_count(32.0, 6.4), 5);
-  EXPECT_EQ(interval_count(1.0, 0.3), 4);                  // the last interval shortened
-  EXPECT_EQ(interval_count(1.0, 2.0), 1);                  // at least one
+  EXPECT_EQ(interval_count(1.0, 0.3), 4);                          // the last interval shortened
+  EXPECT_EQ(interval_count(1.0, 2.0), 1);                          // at least one
+  EXPECT_EQ(interval_count(416.666667, 1.6666666666666667), 250);  // a 2e-7 sliver merged
+  EXPECT_EQ(interval_count(1.0001, 0.25), 5);  // a short last interval (4e-4 of a step) kept
   EXPECT_EQ(interval_count(32.0, 1e-8), 3'200'000'000LL);  // > 2^31
   EXPECT_EQ(interval_count(1e308, 1.0), std::numeric_limits<long long>::max());
   EXPECT_EQ(interval_count(1e308, 1e-300), std::numeric_limits<long long>::max());  // inf

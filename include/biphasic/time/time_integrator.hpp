@@ -83,11 +83,18 @@ inline double default_first_step(double output_interval, double time_to_first_st
 /// refused beyond it): more would not fit a step counter, and would take months to write.
 inline constexpr long long kMaxOutputIntervals = 10'000'000;
 
-/// Number of intervals of length dt in [0, t_end], the last one shortened to land on t_end:
-/// ⌈t_end / dt⌉ (to within 1e-9 of an interval), at least 1. Computed in double and returned
-/// in 64 bits, saturated at the largest long long (t_end / dt may be 1e316 or infinite).
+/// A remainder shorter than this fraction of a step is merged into the step before it instead
+/// of being taken as a step of its own: a sliver step (t_end given to 6 digits, 416.666667 s
+/// with Δt = 1.6666… s, leaves 2e-7 Δt) has a mass residual that divides round-off by its
+/// length and cannot converge.
+inline constexpr double kSliverFraction = 1e-6;
+
+/// Number of intervals of length dt in [0, t_end], the last one shortened (or lengthened by
+/// less than kSliverFraction of an interval) to land on t_end: ⌈t_end / dt − kSliverFraction⌉,
+/// at least 1. Computed in double and returned in 64 bits, saturated at the largest long long
+/// (t_end / dt may be 1e316 or infinite).
 inline long long interval_count(double t_end, double dt) {
-  const double count = std::ceil(t_end / dt - 1e-9);
+  const double count = std::ceil(t_end / dt - kSliverFraction);
   if (!(count < 9.0e18)) return std::numeric_limits<long long>::max();
   return std::max(1LL, static_cast<long long>(count));
 }
