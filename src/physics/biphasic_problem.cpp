@@ -280,14 +280,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   }
   dirichlet_ = std::move(rows_held.rows());
   dirichlet_held_ = std::move(rows_held.constrained());
-  platens_.check_free(dirichlet_held_, config.bcs, 3);
-  platens_.bind(pattern_, row_scale_u_);
-  constrained_ = dirichlet_held_;
-  platens_.mark_tied(constrained_);
-  for (const RigidPlaten& platen : platens_.platens()) {
-    std::vector<Index>& held = held_rows_[platen.boundary];
-    held.insert(held.end(), platen.dofs.begin(), platen.dofs.end());
-  }
+  constrained_ = platens_.tie(dirichlet_held_, pattern_, row_scale_u_, config.bcs, held_rows_);
   solution_scales_ = data_scales(mesh, config, modulus_);
   if (!platens_.empty()) {
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);

@@ -117,8 +117,10 @@ std::vector<NodeCoupling> RigidPlatens::couplings() const {
   return out;
 }
 
-void RigidPlatens::check_free(const std::vector<char>& held,
-                              const std::vector<BoundaryCondition>& bcs, int components) const {
+std::vector<char> RigidPlatens::tie(const std::vector<char>& held, const SparsityPattern& pattern,
+                                    double row_scale, const std::vector<BoundaryCondition>& bcs,
+                                    std::map<std::string, std::vector<Index>>& held_rows) {
+  const int components = pattern.components();
   for (const RigidPlaten& p : platens_)
     for (Index dof : p.dofs)
       if (held[static_cast<std::size_t>(dof)])
@@ -127,6 +129,15 @@ void RigidPlatens::check_free(const std::vector<char>& held,
             std::to_string(dof / components) +
             " is also held along the platen's component by a displacement or symmetry condition "
             "(or the axis); a rigid platen's nodes move with the platen");
+  bind(pattern, row_scale);
+  std::vector<char> constrained = held;
+  for (const RigidPlaten& p : platens_) {
+    for (Index i : p.dofs)
+      if (i != p.master) constrained[static_cast<std::size_t>(i)] = 1;
+    std::vector<Index>& rows = held_rows[p.boundary];
+    rows.insert(rows.end(), p.dofs.begin(), p.dofs.end());
+  }
+  return constrained;
 }
 
 void RigidPlatens::bind(const SparsityPattern& pattern, double row_scale) {
@@ -155,12 +166,6 @@ void RigidPlatens::bind(const SparsityPattern& pattern, double row_scale) {
       pos.tie_master.push_back(at(i, p.master));
     }
   }
-}
-
-void RigidPlatens::mark_tied(std::vector<char>& constrained) const {
-  for (const RigidPlaten& p : platens_)
-    for (Index i : p.dofs)
-      if (i != p.master) constrained[static_cast<std::size_t>(i)] = 1;
 }
 
 void RigidPlatens::raise_solution_scales(const Config& config, double HA, const double* extent,

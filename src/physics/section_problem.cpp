@@ -266,14 +266,7 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   }
   dirichlet_ = std::move(rows_held.rows());
   dirichlet_held_ = std::move(rows_held.constrained());
-  platens_.check_free(dirichlet_held_, config.bcs, 2);
-  platens_.bind(pattern_, row_scale_u_);
-  constrained_ = dirichlet_held_;
-  platens_.mark_tied(constrained_);
-  for (const RigidPlaten& platen : platens_.platens()) {
-    std::vector<Index>& held = held_rows_[platen.boundary];
-    held.insert(held.end(), platen.dofs.begin(), platen.dofs.end());
-  }
+  constrained_ = platens_.tie(dirichlet_held_, pattern_, row_scale_u_, config.bcs, held_rows_);
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());

@@ -60,16 +60,15 @@ class RigidPlatens {
   /// The pattern couplings the platens need (master node ↔ neighbourhood).
   std::vector<NodeCoupling> couplings() const;
 
-  /// Throws std::runtime_error naming the platen's condition and the node if a platen unknown is
-  /// also held by a displacement or symmetry condition (or the axis): `held` flags the unknowns
-  /// of the Dirichlet rows; `components` unknowns per node.
-  void check_free(const std::vector<char>& held, const std::vector<BoundaryCondition>& bcs,
-                  int components) const;
-  /// Positions in `pattern` (built with couplings()); s = tie-row scale [N/mm].
-  void bind(const SparsityPattern& pattern, double row_scale);
-  /// Flags the tie rows (every platen unknown but the master) in `constrained`.
-  void mark_tied(std::vector<char>& constrained) const;
-
+  /// Ties the platens into a problem once its Dirichlet rows are known (`held` flags their
+  /// unknowns): checks that no platen unknown is held (else std::runtime_error naming the
+  /// platen's condition and the node), binds the positions in `pattern` (built with couplings();
+  /// s = tie-row scale [N/mm]), adds each platen's unknowns to held_rows[its boundary] (its
+  /// reaction rows), and returns the constrained() flags: held or tied (every platen unknown but
+  /// the master).
+  std::vector<char> tie(const std::vector<char>& held, const SparsityPattern& pattern,
+                        double row_scale, const std::vector<BoundaryCondition>& bcs,
+                        std::map<std::string, std::vector<Index>>& held_rows);
   /// The (displacement [mm], pressure [MPa]) scales the platen forces imply: the largest
   /// |P(t)| over [0, t_end] per platen area as a stress, and that stress over the oedometric
   /// modulus HA [MPa] times the body's extent along the platen's component [mm]. Raises `scales`.
@@ -88,6 +87,8 @@ class RigidPlatens {
   void apply(double* y, double* ydot) const;
 
  private:
+  /// Positions in `pattern`; s = tie-row scale [N/mm].
+  void bind(const SparsityPattern& pattern, double row_scale);
   struct Positions {
     std::vector<std::pair<Index, Index>> into_master;  ///< (entry of a tie row, force-row entry)
     std::vector<Index> tie_diagonal, tie_master;       ///< (i, i) and (i, m) per tie row
