@@ -19,7 +19,7 @@ constexpr const char* kProgramHead = R"(usage:
   biphasic run CASE.toml [-o DIR] [--overwrite] [--set KEY=VALUE ...] [--quiet]
   biphasic run CASE.toml --restart DIR [--set KEY=VALUE ...] [--quiet]
   biphasic check CASE.toml [--set KEY=VALUE ...]   validate the case (and overrides) on its mesh
-  biphasic schema            print the case-file reference (Markdown)
+  biphasic schema [--json]   print the case-file reference (Markdown, or JSON Schema)
   biphasic --help | --version
   biphasic COMMAND --help    the options of one command (run, check, schema)
 
@@ -107,12 +107,15 @@ value).
 )";
 
 constexpr const char* kSchemaHelp = R"(usage:
-  biphasic schema
+  biphasic schema [--json]
 
 Prints the case-file reference in Markdown: every key with its type, default, allowed values
 or range, unit and meaning (the same text as docs/case_file.md).
 
 options:
+  --json                 the same schema as JSON Schema (draft-07), for editors and validators:
+                         biphasic schema --json > biphasic-case.schema.json (docs/case_file.md,
+                         *Editor support*)
   -h, --help             this help
 
 exit status: 0.

@@ -117,9 +117,14 @@ int main(int argc, char** argv) {
   }
   try {
     if (args[0] == "schema") {
-      if (args.size() > 1)
-        throw std::invalid_argument("schema takes no arguments ('" + args[1] + "' given)");
-      std::cout << biphasic::case_schema_markdown();
+      const bool as_json = args.size() == 2 && args[1] == "--json";
+      if (args.size() > 1 && !as_json)
+        throw std::invalid_argument("schema takes no arguments but --json ('" + args[1] +
+                                    "' given)");
+      if (as_json)
+        std::cout << biphasic::case_json_schema().dump(2) << '\n';
+      else
+        std::cout << biphasic::case_schema_markdown();
       return 0;
     }
     if (args[0] == "run") return run_command({args.begin() + 1, args.end()}, false);

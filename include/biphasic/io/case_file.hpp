@@ -35,6 +35,11 @@ Config parse_case(const std::string& toml_text, const std::string& source_name,
 /// Markdown reference of every key (type, default, range/choices, unit, help), from the schema.
 std::string case_schema_markdown();
 
+/// The same schema as JSON Schema (draft-07) for editors and validators: every key with its
+/// type, range, choices, and help and unit as its description; unknown keys are not allowed;
+/// [[boundary]] entries with the keys each type needs or forbids.
+nlohmann::json case_json_schema();
+
 /// The resolved configuration as JSON (stored in the run summary), with every key and value,
 /// laid out like the case file (plus "case_file").
 nlohmann::json config_to_json(const Config& config);
