@@ -174,9 +174,14 @@ def load_study(path):
     except (OSError, tomllib.TOMLDecodeError) as e:
         raise StudyError(f"{path}: {e}")
     for key in study:
-        if key not in ("title", "base", "set", "reference", "reference_check", "sweep", "output"):
+        if key not in ("title", "base", "set", "reference", "reference_check", "sweep", "output",
+                       "columns"):
             raise StudyError(f"{path}: unknown key '{key}' (title, base, set, reference, "
-                             "reference_check, sweep, output)")
+                             "reference_check, sweep, output, columns)")
+    columns = study.get("columns")
+    if columns is not None and (not isinstance(columns, list) or not columns
+                                or not all(isinstance(c, str) for c in columns)):
+        raise StudyError(f"{path}: columns = {columns!r}: a non-empty list of column names")
     if "base" not in study:
         raise StudyError(f"{path}: 'base' (the base case file) is missing")
     base = BaseCase((path.parent / study["base"]).resolve())
@@ -484,6 +489,78 @@ def midheight_error(run_line, ref_line):
     return None
 
 
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def curve_extremes(points, t_end):
+    """(largest |value|, largest |slope|) of a piecewise-linear curve over [0, t_end]."""
+    if not points:
+        return 1.0, 0.0
+    ts = [0.0] + [t for t, _ in points if 0.0 < t < t_end] + [t_end]
+
+    def value(t):
+        if t <= points[0][0]:
+            return points[0][1]
+        for (t0, v0), (t1, v1) in zip(points, points[1:]):
+            if t <= t1:
+                return v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+        return points[-1][1]
+    top = max(abs(value(t)) for t in ts)
+    slope = 0.0
+    for (t0, v0), (t1, v1) in zip(points, points[1:]):
+        if t1 > 0.0 and t0 < t_end and t1 > t0:
+            slope = max(slope, abs(v1 - v0) / (t1 - t0))
+    return top, slope
+
+
+def loading_of(summary):
+    """How the run is loaded, from its own geometry and conditions: {"loading": text,
+    "strain": final compressive strain (largest displacement over the body's extent along it;
+    for a rigid platen its measured final displacement), "loading_rate_um_s": the fastest
+    platen speed the curve prescribes}; None where the run does not say (no displacement
+    condition, or no bounds in an old summary)."""
+    cfg = summary["configuration"]
+    bounds = summary["mesh"].get("bounds")
+    out = {"loading": None, "strain": None, "loading_rate_um_s": None}
+    if not bounds:
+        return out
+    extent = [hi - lo for lo, hi in zip(bounds["min"], bounds["max"])]
+    t_end = cfg["time"]["t_end"]
+    best = None
+    for b in cfg["boundary"]:
+        if b["type"] not in ("displacement", "rigid_platen") or b.get("component") not in AXES:
+            continue
+        c = AXES[b["component"]]
+        if extent[c] <= 0:
+            continue
+        top, slope = curve_extremes(cfg.get("curves", {}).get(b.get("curve", ""), []), t_end)
+        if b["type"] == "rigid_platen":
+            outs = [o for o in summary["outputs"] if o.get("platens", {}).get(b["name"])]
+            if not outs:
+                continue
+            depth, rate = abs(outs[-1]["platens"][b["name"]]["displacement"]), None
+        else:
+            depth, rate = abs(b["value"]) * top, abs(b["value"]) * slope * 1e3
+        if depth > 0 and (best is None or depth > best[0]):
+            best = (depth, {"loading": f"{b['type']} {b['component']} on '{b['name']}'",
+                            "strain": depth / extent[c],
+                            "loading_rate_um_s": rate})
+    return best[1] if best else out
+
+
+def reaction_columns(last):
+    """The last output's reactions and platen records as columns: reaction_<name>_<x|y|z> [N],
+    platen_<name>_displacement [mm], platen_<name>_force [N]."""
+    cols = {}
+    for name, force in (last.get("reactions") or {}).items():
+        for axis, value in zip("xyz", force):
+            cols[f"reaction_{name}_{axis}"] = value
+    for name, rec in (last.get("platens") or {}).items():
+        cols[f"platen_{name}_displacement"] = rec["displacement"]
+        cols[f"platen_{name}_force"] = rec["force"]
+    return cols
+
+
 def row_for(run, run_dir, study_name, reference_infos, rss_gb):
     """One table row; reference_infos: {"reference" or "reference_check": (dir, label)}."""
     s = json.loads((run_dir / "summary.json").read_text())
@@ -495,24 +572,24 @@ def row_for(run, run_dir, study_name, reference_infos, rss_gb):
         vals = [o[key] for o in outs if o.get(key) is not None]
         return max(vals) if vals else None
 
-    top = next((b for b in cfg["boundary"] if b["name"] == "top" and b["type"] == "displacement"),
-               None)
-    height = cfg["mesh"].get("height", 8.0)
     t_end = cfg["time"]["t_end"]
-    strain = -top["value"] / height if top else None
-    line_elements = (s["line"]["nodes"] - 1) // 2
+    loading = loading_of(s)
+    line = s.get("line", {})
+    line_elements = (line.get("nodes", 1) - 1) // 2  # P2 elements along a line of mesh nodes
+    line_length = (math.dist(line["start"], line["end"]) if "start" in line and "end" in line
+                   else None)
     row = {
         "study": study_name, "sweep": run["sweep"], "run": run["dir"], "status": s["status"],
         **{f"param:{k}": v for k, v in run["params"].items()},
         "mesh_lc": cfg["mesh"].get("lc"), "mesh_layers": cfg["mesh"].get("layers", 0),
-        "unknowns": s["mesh"]["unknowns"], "tetrahedra": s["mesh"]["tetrahedra"],
-        "h_line": height / line_elements if line_elements > 0 else None,
+        "unknowns": s["mesh"]["unknowns"],
+        "tetrahedra": s["mesh"].get("tetrahedra", s["mesh"].get("triangles")),
+        "h_line": line_length / line_elements if line_length and line_elements > 0 else None,
         "permeability": cfg["material"]["permeability"],
         "lambda": cfg["material"]["lambda"], "mu": cfg["material"]["mu"],
         "stabilisation": cfg["stabilisation"]["type"], "integrator": cfg["time"]["integrator"],
         "dt": cfg["time"]["dt"], "bdf_rtol": cfg["time"]["bdf"]["rtol"],
-        "loading_rate_um_s": (-top["value"] / t_end * 1e3) if top else None,
-        "strain": strain, "t_end": t_end,
+        **loading, "t_end": t_end,
         "linear_solver": cfg["linear_solver"]["type"],
         "p_mid": last.get("p_mid"), "overshoot": last.get("overshoot"),
         "overshoot_max": peak("overshoot"), "undershoot": last.get("undershoot"),
@@ -528,6 +605,7 @@ def row_for(run, run_dir, study_name, reference_infos, rss_gb):
         "factorizations": c["factorizations"], "linear_solves": c["linear_solves"],
         "error_test_failures": c.get("error_test_failures"),
         "nonlinear_failures": c.get("nonlinear_failures"),
+        **reaction_columns(last),
     }
     for which, (ref_dir, label) in reference_infos.items():
         if not (run_dir / "line.csv").is_file():
@@ -743,6 +821,12 @@ def main():
         for k in row:
             if k not in columns:
                 columns.append(k)
+    if study.get("columns"):
+        unknown = [c for c in study["columns"] if c not in columns]
+        if unknown:
+            raise StudyError(f"{args.study}: columns: no column {', '.join(unknown)} in the table "
+                             f"(available: {', '.join(columns)})")
+        columns = list(study["columns"])
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "runs.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=columns)

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -240,6 +241,22 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
                      {"displacement_unknowns", problem.num_u()},
                      {"pressure_unknowns", problem.size() - problem.num_u()},
                      {"jacobian_nonzeros", problem.pattern().nnz()}};
+  {
+    // The body's bounding box [mm] (z = 0 for a section): what strains are measured against.
+    std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    auto extend = [&](double x, double y, double z) {
+      const double v[3] = {x, y, z};
+      for (std::size_t c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], v[c]);
+        hi[c] = std::max(hi[c], v[c]);
+      }
+    };
+    if (planar)
+      for (const Point2& x : mesh2->nodes) extend(x[0], x[1], 0.0);
+    else
+      for (const auto& x : mesh3->nodes) extend(x[0], x[1], x[2]);
+    summary["mesh"]["bounds"] = {{"min", lo}, {"max", hi}};
+  }
   summary["model"] = to_string(config.model);
   {
     std::ostringstream s;
