@@ -360,14 +360,20 @@ def remedies(rows, out):
         "uniform refinement, no GLS": [r for r in select(rows, sweep="uniform", stabilisation="none")],
         "GLS, same meshes": [r for r in select(rows, sweep="uniform", stabilisation="gls")],
         "swept mesh graded toward the drained faces, no GLS": select(rows, sweep="graded"),
+        "24 layers graded 30:1 and 100:1, no GLS": select(rows, sweep="graded_ratio"),
     }
-    for (label, rs), style in zip(series.items(), ("o-", "s-", "^-")):
+    for (label, rs), style in zip(series.items(), ("o-", "s-", "^-", "v-")):
         rs = [r for r in rs if r.get("status") == "completed"]
-        rs.sort(key=lambda r: num(r, "unknowns"))
+        if not rs:
+            continue
+        rs.sort(key=lambda r: (num(r, "unknowns"), num(r, "wall_s")))
         ax.loglog([num(r, "wall_s") for r in rs], [100 * num(r, "discrepancy") for r in rs], style,
                   label=label)
         for r in rs:
-            ax.annotate(f"{num(r, 'unknowns') / 1e3:.0f}k", (num(r, "wall_s"), 100 * num(r, "discrepancy")),
+            text = f"{num(r, 'unknowns') / 1e3:.0f}k"
+            if r.get("sweep") == "graded_ratio":
+                text += f", {num(r, 'param:mesh.layer_grading_ratio'):g}:1"
+            ax.annotate(text, (num(r, "wall_s"), 100 * num(r, "discrepancy")),
                         fontsize=6, xytext=(3, 3), textcoords="offset points")
     ax.axhline(1.0, color="grey", lw=0.8)
     ax.set_xlabel("wall time [s]"), ax.set_ylabel("discrepancy at t = 32 s [%]")
