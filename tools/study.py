@@ -637,7 +637,11 @@ def row_for(run, run_dir, study_name, reference_infos, rss_gb):
 
 def reference_overrides(run, base, reference):
     """The physical parameters of a run, applied to the reference case."""
-    physical = {k: v for k, v in run["fixed"].items() if is_physical(k)}
+    # A material key set to the reference's own value changes nothing: left out, so that the
+    # same physical problem always has the same cache key (one reference, computed once).
+    own = reference.toml.get("material", {})
+    physical = {k: v for k, v in run["fixed"].items()
+                if is_physical(k) and not (k.startswith("material.") and own.get(k[9:]) == v)}
     rate, strain = base.default_loading()
     physical.setdefault("loading.rate", round(rate, 12))
     physical.setdefault("loading.strain", round(strain, 12))
