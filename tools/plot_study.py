@@ -148,31 +148,36 @@ def paper(rows, out):
         fig, (a, b) = plt.subplots(1, 2, figsize=(fs.DOUBLE, 2.8))
         a.plot(z, [100 * e for e in axial_strain(z, uz)], ".-")
         a.set_xlabel("z on the axis [mm]"), a.set_ylabel("axial strain [%]"), a.grid(alpha=0.3)
-        a.set_title("nodal strain on the axis, mesh 2, k = 0.1, 1 % strain")
+        a.set_title("nodal axial strain")
         b.plot(z, [v * 1e3 for v in p], ".-")
         b.set_xlabel("z on the axis [mm]"), b.set_ylabel("pressure p [kPa]"), b.grid(alpha=0.3)
-        b.set_title("pressure on the axis")
+        b.set_title("pressure")
+        fig.suptitle("on the axis: mesh 2, k = 0.1 mm⁴/(N s), 1 % strain, t = 32 s")
         fs.letters([a, b])
         save(fig, out, "paper_mesh2_k0.1_strain_pressure.png")
     perm = select(rows, sweep="permeability")
     if perm:
         fig, ax = plt.subplots(figsize=(fs.SINGLE, 2.8))
         pressure_panel(ax, sorted(perm, key=lambda r: -num(r, "permeability")),
-                       lambda r: f"k = {num(r, 'permeability'):g} mm⁴/(N s)",
+                       lambda r: f"{num(r, 'permeability'):g}",
                        "permeability, mesh 2, no stabilisation", with_reference=False)
+        ax.legend(title="k [mm⁴/(N s)]")
         save(fig, out, "paper_permeability.png")
     for sweep, ks, name in (("refine_nogls", (1e-2, 5e-3, 1e-3), "no stabilisation"),
                             ("refine_gls", (5e-3, 1e-3), "GLS")):
         runs = select(rows, sweep=sweep)
         if not runs:
             continue
-        fig, axes = plt.subplots(1, len(ks), figsize=(fs.DOUBLE, 3.0), squeeze=False)
+        fig, axes = plt.subplots(1, len(ks), figsize=(fs.DOUBLE, 3.0), squeeze=False, sharey=True)
         for ax, k in zip(axes[0], ks):
             sel = sorted([r for r in runs if math.isclose(num(r, "permeability"), k)],
                          key=lambda r: num(r, "unknowns"))
             pressure_panel(ax, sel, lambda r: f"{mesh_label(r)} ({100 * num(r, 'discrepancy'):.1f} %)",
-                           f"{name}, k = {k:g} mm⁴/(N s)")
+                           f"k = {k:g} mm⁴/(N s)")
             ax.legend(title="mesh (discrepancy)", handlelength=1.2)
+        for ax in axes[0][1:]:
+            ax.set_ylabel("")
+        fig.suptitle(f"mesh refinement, {name}: pressure on the axis at t = 32 s")
         fs.letters(axes[0])
         save(fig, out, f"paper_{sweep}.png")
     strain = select(rows, sweep="strain")
@@ -186,9 +191,10 @@ def paper(rows, out):
                 ax.plot(z, [v / pm for v in p], ".-", ms=3,
                         label=f"{100 * num(r, 'strain'):g} % ({fs.percent(100 * num(r, 'overshoot'))} %)")
             ax.set_xlabel("z on the axis [mm]"), ax.grid(alpha=0.3)
-            ax.set_title(f"higher strains, mesh 2, k = 1e-3, {STAB[stab]}")
+            ax.set_title(STAB[stab])
             ax.legend(title="strain (overshoot)")
         axes[0].set_ylabel("p / max p [–]")
+        fig.suptitle("higher strains, mesh 2, k = 1e-3 mm⁴/(N s): pressure on the axis at the end")
         fs.letters(axes)
         save(fig, out, "paper_higher_strains.png")
 
