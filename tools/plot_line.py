@@ -36,8 +36,13 @@ def title_of(run_dir, short=False):
         cfg = s["configuration"]
         if short:
             stab = cfg["stabilisation"]["type"]
-            return (f"{cfg.get('title') or pathlib.Path(run_dir).name}: "
-                    f"k = {cfg['material']['permeability']:g} mm⁴/(N s), {STAB.get(stab, stab)}")
+            text = f"k = {cfg['material']['permeability']:g} mm⁴/(N s), {STAB.get(stab, stab)}"
+            time = cfg.get("time", {})
+            if time.get("integrator") == "backward_euler" and "dt" in time:
+                text += f", backward Euler Δt = {time['dt']:g} s"
+            elif time.get("integrator"):
+                text += f", {'BDF' if time['integrator'] == 'bdf' else time['integrator']}"
+            return text
         return cfg.get("title") or str(run_dir)
     except (OSError, KeyError, ValueError):
         return str(run_dir)
@@ -75,6 +80,7 @@ def main():
     axu.set_xlabel("axial displacement u_z [mm]")
     for ax in (axp, axu):
         ax.grid(alpha=0.3)
+        ax.xaxis.set_major_locator(plt.MaxNLocator(5))
     fs.letters([axp, axu])
     # one legend for both panels (the same curves), below them
     handles, labels = axp.get_legend_handles_labels()
