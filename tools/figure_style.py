@@ -73,7 +73,14 @@ def save(fig, path, tight=True, formats=("png", "pdf")):
 
 
 def panel_label(ax, letter, x=-0.02, y=1.02):
-    """Bold panel letter "(a)" at the upper left, outside the axes."""
+    """Bold panel letter "(a)" at the upper left. When the axes have a (centred) title, the
+    letter leads it and the title moves to the left, so that the two cannot overlap; call
+    after set_title. Otherwise the letter stands just outside the upper-left corner."""
+    title = ax.get_title()
+    if title:
+        ax.set_title("")
+        ax.set_title(rf"$\bf{{({letter})}}$  {title}", loc="left")
+        return
     ax.text(x, y, f"({letter})", transform=ax.transAxes, fontsize=9, fontweight="bold",
             ha="right", va="bottom")
 
