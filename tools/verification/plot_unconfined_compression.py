@@ -58,7 +58,7 @@ def main():
     for ax in (ax_f, ax_p, ax_e):
         ax.set_xscale("log")
         ax.set_xlabel("τ = c t / a² [–]")
-    ax_f.legend()
+    ax_f.legend(loc="lower left")
     ax_e.legend()
     ax_f.set_ylabel("platen force F / (π a² ε₀ E) [–]")
     ax_f.set_title("platen force")
