@@ -27,7 +27,7 @@ def main():
     if not files:
         print("  no oscillation/ results; skipped")
         return
-    fig, ax = plt.subplots(figsize=(fs.DOUBLE * 0.62, 3.4))
+    fig, ax = plt.subplots(figsize=(fs.DOUBLE, 3.2))
     floor = 1e-5
     path = files[0]  # the curve depends on r alone: other nz give the same values
     nz = path.stem.split("nz")[1]

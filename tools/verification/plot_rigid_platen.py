@@ -28,7 +28,7 @@ def main():
     if not mandel.is_dir() and not creep.is_dir():
         print("  no mandel/ or confined_creep/ results; skipped")
         return
-    fig, (ax_c, ax_p, ax_s) = plt.subplots(1, 3, figsize=(fs.DOUBLE, 3.0))
+    fig, (ax_c, ax_p, ax_s) = plt.subplots(1, 3, figsize=(fs.DOUBLE, 3.4))
 
     # (a) Mandel: centre pressure against T.
     if mandel.is_dir():
@@ -67,8 +67,10 @@ def main():
                           ms=2, color=colour)
             ax_p.set_xlabel("x / a [–]")
             ax_p.set_ylabel("pressure p / σ₀ [–]")
-            ax_p.set_title("Mandel, midplane (series: lines, BDF: dots)", fontsize=8)
-            ax_p.legend(loc="lower left", handlelength=1.0, borderaxespad=0.2)
+            ax_p.set_title("Mandel, midplane")
+            fig.legend(*ax_p.get_legend_handles_labels(), loc="lower center", ncol=len(times),
+                       handlelength=1.2, columnspacing=1.0,
+                       title="(b) at T: series (lines), BDF (dots)")
 
     # (c) Confined creep: settlement against T.
     if creep.is_dir():
@@ -87,9 +89,10 @@ def main():
         ax_s.set_xlabel("T = c t / H² [–]")
         ax_s.set_ylabel("settlement / (q H / H_A) [–]")
         ax_s.set_title("confined creep")
-        ax_s.legend(loc="lower right", borderaxespad=0.2)
+        ax_s.legend(loc="upper left", borderaxespad=0.2)
     fs.letters([ax_c, ax_p, ax_s])
-    save(fig, fig_dir, "rigid_platen")
+    fig.tight_layout(rect=(0, 0.16 if fig.legends else 0, 1, 1))
+    save(fig, fig_dir, "rigid_platen", tight=False)
 
 
 if __name__ == "__main__":
