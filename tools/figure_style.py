@@ -94,10 +94,10 @@ def letters(axes):
 def plain_log_ticks(axis, minor_subs=None):
     """Plain numbers (0.5, 1, 2) on a log axis instead of 10^k, with the minor ticks at
     `minor_subs` of each decade labelled too (all minor ticks when the axis spans less than a
-    decade), so that every log axis carries several labelled ticks. `minor_subs` defaults to
+    third of a decade), so that every log axis carries several labelled ticks. `minor_subs` defaults to
     2, 3, 5 over up to two decades and 2, 5 over more. Call after the limits are final."""
     lo, hi = axis.get_view_interval()
-    narrow = lo > 0 and hi / lo < 10
+    narrow = lo > 0 and hi / lo < 3
     if minor_subs is None:
         minor_subs = (2, 3, 5) if lo > 0 and hi / lo <= 100 else (2, 5)
 

@@ -19,7 +19,7 @@ from verification_csv import fs, label, print_errors, read, save  # noqa: E402
 
 def plot(csv_dir, fig_dir, runs, title, reference_label, name):
     """Stress and relative error of `runs`, which share one reference, into FIG_DIR/name.png."""
-    fig, (ax_s, ax_e) = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.0))
+    fig, (ax_s, ax_e) = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.2))
     base = read(csv_dir / f"{runs[0]}.csv")
     t = [r["t"] for r in base]
     ax_s.plot(t, [-r["stress_neo_hookean"] for r in base], "k-", label=reference_label)
@@ -35,14 +35,15 @@ def plot(csv_dir, fig_dir, runs, title, reference_label, name):
                   label=label(run))
     ax_s.set_xlabel("time t [s]")
     ax_s.set_ylabel("compressive platen stress −P_zz [MPa]")
-    ax_s.set_title(title)
+    ax_s.set_title("platen stress")
+    fig.suptitle(title)
     ax_s.legend()
     ax_e.axhline(5e-3, color="r", lw=0.8, ls="--", label="asserted bound 0.5 %")
     ax_e.set_yscale("log")
     ax_e.set_xlabel("time t [s]")
     ax_e.set_ylabel("relative error |σ_h / σ_ref − 1| [–]")
     ax_e.set_title("error against the finite-strain reference")
-    ax_e.legend()
+    ax_e.legend(loc="upper right")
     fs.letters([ax_s, ax_e])
     save(fig, fig_dir, name)
 

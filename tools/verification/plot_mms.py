@@ -48,12 +48,13 @@ def main():
         return
 
     fs.apply()
-    fig, ax = plt.subplots(figsize=(fs.SINGLE, 3.6))
+    fig, ax = plt.subplots(figsize=(fs.SINGLE, 3.2 + 0.17 * 2 * len(tables)))
     markers = ["o", "s", "^", "D", "v"]
     h_all = None
     for i, path in enumerate(tables):
         h, eu, ep = read_table(path)
-        name = pathlib.Path(path).stem.removeprefix("convergence_").replace("_", " ")
+        name = (pathlib.Path(path).stem.removeprefix("convergence").replace("_", " ")
+                .replace("fine", "").strip() or "default")
         m = markers[i % len(markers)]
         suffix = f" ({name})" if len(tables) > 1 else ""
         ax.loglog(h, eu, "-" + m, color="tab:blue", label=f"displacement ‖u − u_h‖{suffix}")
@@ -67,7 +68,7 @@ def main():
     ax.set_title(args.title)
     ax.grid(True, which="both", alpha=0.3)
     fs.plain_log_ticks(ax.xaxis)  # h spans about a decade: 0.1, 0.2, 0.3, 0.5
-    ax.legend()
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2))
     for path in fs.save(fig, out):
         print(f"wrote {path}")
 
