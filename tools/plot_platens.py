@@ -16,6 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import figure_style as fs  # noqa: E402
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -35,8 +37,8 @@ def main():
             series.setdefault(row["platen"], ([], []))
             series[row["platen"]][0].append(t)
             series[row["platen"]][1].append(w)
-    plt.rcParams.update({"font.size": 9, "legend.fontsize": 8})
-    fig, ax = plt.subplots(figsize=(3.5, 2.6))
+    fs.apply()
+    fig, ax = plt.subplots(figsize=(fs.SINGLE, 2.6))
     for name, (t, w) in series.items():
         settle = [-x * 1e3 for x in w]  # µm, positive down
         ax.plot(t, settle, "o-", ms=2.5, lw=1, label=f"platen '{name}'")
@@ -47,15 +49,12 @@ def main():
                                                        lambda e: e * 10 * args.strain))
         right.set_ylabel("strain [%]")
     if args.title:
-        ax.set_title(args.title, fontsize=9)
+        ax.set_title(args.title)
     if len(series) > 1:
-        ax.legend(frameon=False)
-    fig.tight_layout()
+        ax.legend()
     base = pathlib.Path(args.output) if args.output else run / "platens"
-    base.parent.mkdir(parents=True, exist_ok=True)
-    for ext, kw in (("png", {"dpi": 200}), ("pdf", {})):
-        fig.savefig(f"{base}.{ext}", **kw)
-        print(f"wrote {base}.{ext}")
+    for path in fs.save(fig, base):
+        print(f"wrote {path}")
 
 
 if __name__ == "__main__":

@@ -10,7 +10,8 @@ KIND:
   stability      first-step overshoot over (k, dt) per mesh with the line c dt / h^2 = 1/6
   remedies       cost of accuracy: refinement, GLS, graded mesh (study remedies)
 
-Each writes PNG files into OUT_DIR and prints their names.
+Each writes PNG files (200 dpi) with a vector PDF beside each into OUT_DIR and prints their names.
+Figures are drawn at their printed width (7.2 in for two columns, 3.5 in for one).
 """
 import argparse
 import csv
@@ -22,9 +23,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib import ticker  # noqa: E402
+from matplotlib import colors  # noqa: E402
+
+import figure_style as fs  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+STAB = {"none": "no stabilisation", "gls": "GLS"}
+plain_log_ticks = fs.plain_log_ticks
 
 
 def read_rows(dirs):
@@ -96,11 +101,17 @@ def select(rows, **conds):
     return out
 
 
+def g(v):
+    """A number as %g without the exponent's leading zero (1e-5, not 1e-05)."""
+    return f"{v:g}".replace("e-0", "e-").replace("e+0", "e")
+
+
 def mesh_label(row):
     lc = num(row, "mesh_lc")
     names = {1.3: "mesh 1", 0.98: "mesh 2", 0.73: "mesh 3", 0.57: "mesh 4"}
-    layers = int(num(row, "mesh_layers") or 0)
+    layers = num(row, "mesh_layers")
     if layers > 0:
+        layers = int(layers)
         return f"swept, {layers} layers"
     return next((n for v, n in names.items() if math.isclose(v, lc)), f"lc {lc:g}")
 
@@ -115,24 +126,16 @@ def pressure_panel(ax, runs, label_of, title, with_reference=True):
             z, p, _ = line_at(ref, num(runs[0], "t_end"))
             ax.plot(z, [v * 1e3 for v in p], "k--", lw=1, label="reference")
     ax.set_xlabel("z on the axis [mm]")
-    ax.set_ylabel("pressure [kPa]")
-    ax.set_title(title, fontsize=9)
+    ax.set_ylabel("pressure p [kPa]")
+    ax.set_title(title)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend()
 
 
 def save(fig, out, name, tight=True):
-    """PNG at 200 dpi (print-ready)."""
-    path = pathlib.Path(out) / name
-    if tight:
-        fig.tight_layout()
-    fig.savefig(path, dpi=200)
-    plt.close(fig)
-    print(path)
-
-
-def kfmt(r):
-    return f"k = {num(r, 'permeability'):g}"
+    """NAME (PNG, 200 dpi) and the same name as PDF into OUT."""
+    for path in fs.save(fig, pathlib.Path(out) / name, tight=tight):
+        print(path)
 
 
 # ---- kinds ---------------------------------------------------------------------------------
@@ -142,63 +145,79 @@ def paper(rows, out):
     if mesh2_k01:
         r = mesh2_k01[0]
         z, p, uz = line_at(r["_dir"])
-        fig, (a, b) = plt.subplots(1, 2, figsize=(9, 3.6))
+        fig, (a, b) = plt.subplots(1, 2, figsize=(fs.DOUBLE, 2.8))
         a.plot(z, [100 * e for e in axial_strain(z, uz)], ".-")
-        a.set_xlabel("z [mm]"), a.set_ylabel("axial strain [%]"), a.grid(alpha=0.3)
-        a.set_title("nodal strain on the axis, mesh 2, k = 0.1, 1 % strain", fontsize=9)
+        a.set_xlabel("z on the axis [mm]"), a.set_ylabel("axial strain [%]"), a.grid(alpha=0.3)
+        a.set_title("nodal axial strain")
         b.plot(z, [v * 1e3 for v in p], ".-")
-        b.set_xlabel("z [mm]"), b.set_ylabel("pressure [kPa]"), b.grid(alpha=0.3)
-        b.set_title("pressure on the axis", fontsize=9)
+        b.set_xlabel("z on the axis [mm]"), b.set_ylabel("pressure p [kPa]"), b.grid(alpha=0.3)
+        b.set_title("pressure")
+        fig.suptitle("on the axis: mesh 2, k = 0.1 mm⁴/(N s), 1 % strain, t = 32 s")
+        fs.letters([a, b])
         save(fig, out, "paper_mesh2_k0.1_strain_pressure.png")
     perm = select(rows, sweep="permeability")
     if perm:
-        fig, ax = plt.subplots(figsize=(6, 4))
-        pressure_panel(ax, sorted(perm, key=lambda r: -num(r, "permeability")), kfmt,
-                       "influence of permeability, mesh 2, no GLS", with_reference=False)
+        fig, ax = plt.subplots(figsize=(fs.SINGLE, 2.8))
+        pressure_panel(ax, sorted(perm, key=lambda r: -num(r, "permeability")),
+                       lambda r: f"{num(r, 'permeability'):g}",
+                       "permeability, mesh 2, no stabilisation", with_reference=False)
+        ax.legend(title="k [mm⁴/(N s)]")
         save(fig, out, "paper_permeability.png")
-    for sweep, ks, name in (("refine_nogls", (1e-2, 5e-3, 1e-3), "no GLS"),
+    for sweep, ks, name in (("refine_nogls", (1e-2, 5e-3, 1e-3), "no stabilisation"),
                             ("refine_gls", (5e-3, 1e-3), "GLS")):
         runs = select(rows, sweep=sweep)
         if not runs:
             continue
-        fig, axes = plt.subplots(1, len(ks), figsize=(4.2 * len(ks), 3.8), squeeze=False)
+        fig, axes = plt.subplots(1, len(ks), figsize=(fs.DOUBLE, 3.0), squeeze=False, sharey=True)
         for ax, k in zip(axes[0], ks):
             sel = sorted([r for r in runs if math.isclose(num(r, "permeability"), k)],
                          key=lambda r: num(r, "unknowns"))
-            pressure_panel(ax, sel, lambda r: f"{mesh_label(r)} (disc. {100 * num(r, 'discrepancy'):.1f} %)",
-                           f"mesh refinement, {name}, k = {k:g}")
+            pressure_panel(ax, sel, lambda r: f"{mesh_label(r)} ({100 * num(r, 'discrepancy'):.1f} %)",
+                           f"k = {k:g} mm⁴/(N s)")
+            ax.legend(title="mesh (discrepancy)", handlelength=1.2)
+        for ax in axes[0][1:]:
+            ax.set_ylabel("")
+        fig.suptitle(f"mesh refinement, {name}: pressure on the axis at t = 32 s")
+        fs.letters(axes[0])
         save(fig, out, f"paper_{sweep}.png")
     strain = select(rows, sweep="strain")
     if strain:
-        fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
+        fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.0), sharey=True)
         for ax, stab in zip(axes, ("none", "gls")):
             sel = sorted(select(strain, stabilisation=stab), key=lambda r: num(r, "strain"))
             for r in sel:
                 z, p, _ = line_at(r["_dir"])
                 pm = max(abs(v) for v in p) or 1.0
                 ax.plot(z, [v / pm for v in p], ".-", ms=3,
-                        label=f"{100 * num(r, 'strain'):g} % (overshoot {100 * num(r, 'overshoot'):.1f} %)")
-            ax.set_xlabel("z [mm]"), ax.set_ylabel("p / max p"), ax.grid(alpha=0.3)
-            ax.set_title(f"higher strains, mesh 2, k = 1e-3, {'GLS' if stab == 'gls' else 'no GLS'}",
-                         fontsize=9)
-            ax.legend(fontsize=7)
+                        label=f"{100 * num(r, 'strain'):g} % ({fs.percent(100 * num(r, 'overshoot'))} %)")
+            ax.set_xlabel("z on the axis [mm]"), ax.grid(alpha=0.3)
+            ax.set_title(STAB[stab])
+            ax.legend(title="strain (overshoot)")
+        axes[0].set_ylabel("p / max p [–]")
+        fig.suptitle("higher strains, mesh 2, k = 1e-3 mm⁴/(N s): pressure on the axis at the end")
+        fs.letters(axes)
         save(fig, out, "paper_higher_strains.png")
 
 
 def sensitivity(rows, out):
-    fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
+    fig, axes = plt.subplots(2, 2, figsize=(fs.DOUBLE, 5.6), sharey="row")
     for col, stab in enumerate(("none", "gls")):
         be = sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt"))
-        pressure_panel(axes[0][col], be, lambda r: f"BE dt = {num(r, 'dt'):g} s "
-                       f"(osc. {num(r, 'oscillation_max'):.2f})",
-                       f"backward Euler, t = 32 s, {'GLS' if stab == 'gls' else 'no GLS'}")
+        pressure_panel(axes[0][col], be, lambda r: f"Δt = {num(r, 'dt'):g} s "
+                       f"({fs.sig(num(r, 'oscillation_max'))})",
+                       f"backward Euler, t = 32 s, {STAB[stab]}")
+        axes[0][col].legend(title="step (oscillation measure)")
         bdf = sorted(select(rows, sweep="bdf_rtol", stabilisation=stab), key=lambda r: -num(r, "bdf_rtol"))
-        pressure_panel(axes[1][col], bdf, lambda r: f"BDF rtol = {num(r, 'bdf_rtol'):g} "
-                       f"(osc. {num(r, 'oscillation_max'):.2f})",
-                       f"variable-order BDF, t = 32 s, {'GLS' if stab == 'gls' else 'no GLS'}")
+        pressure_panel(axes[1][col], bdf, lambda r: f"rtol = {g(num(r, 'bdf_rtol'))} "
+                       f"({fs.sig(num(r, 'oscillation_max'))})",
+                       f"variable-order BDF, t = 32 s, {STAB[stab]}")
+        axes[1][col].legend(title="tolerance (oscillation measure)")
+    for ax in axes[:, 1]:
+        ax.set_ylabel("")
+    fs.letters(axes.flat)
     save(fig, out, "sensitivity_time_step.png")
     # The overshoot over time: where (and when) the oscillation lives.
-    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.3), sharey=True)
     for ax, stab in zip(axes, ("none", "gls")):
         runs = sorted(select(rows, sweep="be_dt", stabilisation=stab), key=lambda r: num(r, "dt"))
         runs += sorted(select(rows, sweep="bdf_rtol", stabilisation=stab), key=lambda r: -num(r, "bdf_rtol"))
@@ -208,26 +227,33 @@ def sensitivity(rows, out):
             be = r["integrator"] == "backward_euler"
             ax.plot([o["t"] for o in outs], [100 * o["overshoot"] for o in outs],
                     "o-" if be else "k--" if math.isclose(num(r, "bdf_rtol"), 1e-4) else ":",
-                    ms=3, lw=1, label=(f"BE dt = {num(r, 'dt'):g} s" if be
-                                       else f"BDF rtol {num(r, 'bdf_rtol'):g}"))
-        ax.set_xlabel("t [s]"), ax.set_ylabel("overshoot on the axis [%]")
-        ax.set_title(f"overshoot over time, mesh 2, k = 1e-3, {'GLS' if stab == 'gls' else 'no GLS'}",
-                     fontsize=9)
-        ax.grid(alpha=0.3), ax.legend(fontsize=7)
-    save(fig, out, "sensitivity_overshoot_over_time.png")
-    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+                    ms=3, lw=1, label=(f"backward Euler, Δt = {num(r, 'dt'):g} s" if be
+                                       else f"BDF, rtol = {g(num(r, 'bdf_rtol'))}"))
+        ax.set_xlabel("time t [s]")
+        ax.set_title(f"mesh 2, k = 1e-3, {STAB[stab]}")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("overshoot on the axis [% of p_mid]")
+    fs.letters(axes)
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3)
+    fig.tight_layout(rect=(0, 0.17, 1, 1))
+    save(fig, out, "sensitivity_overshoot_over_time.png", tight=False)
+    fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.3), sharey=True)
     for ax, integ in zip(axes, ("be_rate", "bdf_rate")):
+        rates = sorted({num(r, "loading_rate_um_s") for r in select(rows, sweep=integ)})
         for stab, style in (("none", "-"), ("gls", "--")):
             for r in sorted(select(rows, sweep=integ, stabilisation=stab),
                             key=lambda r: num(r, "loading_rate_um_s")):
                 z, p, _ = line_at(r["_dir"])
                 pm = max(p) or 1.0
-                ax.plot(z, [v / pm for v in p], style, label=f"{num(r, 'loading_rate_um_s'):g} um/s, "
-                        f"{stab} (overshoot {100 * num(r, 'overshoot_max'):.1f} %)")
-        ax.set_xlabel("z [mm]"), ax.set_ylabel("p / max p at 1 % strain"), ax.grid(alpha=0.3)
-        ax.set_title("loading rate, " + ("backward Euler dt = 6.4 s" if integ == "be_rate"
-                                         else "BDF rtol 1e-4"), fontsize=9)
-        ax.legend(fontsize=6)
+                ax.plot(z, [v / pm for v in p], style,
+                        color=f"C{rates.index(num(r, 'loading_rate_um_s'))}", label=f"{num(r, 'loading_rate_um_s'):g} µm/s, "
+                        f"{STAB[stab]} ({fs.percent(100 * num(r, 'overshoot_max'))} %)")
+        ax.set_xlabel("z on the axis [mm]"), ax.grid(alpha=0.3)
+        ax.set_title("backward Euler, Δt = 6.4 s" if integ == "be_rate" else "BDF, rtol = 1e-4")
+        ax.legend(title="rate, stabilisation (overshoot)", loc="lower center")
+    axes[0].set_ylabel("p / max p at 1 % strain [–]")
+    fs.letters(axes)
     save(fig, out, "sensitivity_loading_rate.png")
 
 
@@ -235,8 +261,9 @@ def work(rows, out):
     """Discrepancy and mid-height error at t = 32 s against two cost measures: wall time and
     linear solves (one back-substitution per Newton iteration). Factorisations are a poor
     cost axis here: backward Euler reuses one factorisation for the whole run at any Δt and
-    BDF needs three at any rtol, so they are given in the legend instead."""
-    names = {"BE": "backward Euler over Δt", "BDF": "BDF over rtol"}
+    BDF needs three at any rtol, so they are given in the legend instead; the end points of
+    each backward-Euler curve are labelled with their Δt."""
+    names = {"BE": "backward Euler", "BDF": "BDF"}
     groups = {}
     for r in rows:
         if r.get("status") != "completed":
@@ -245,10 +272,15 @@ def work(rows, out):
         groups.setdefault((mesh_label(r), integ, r["stabilisation"]), []).append(r)
     colours = {("mesh 1", "gls"): "tab:blue", ("mesh 1", "none"): "tab:orange",
                ("mesh 2", "gls"): "tab:green", ("mesh 2", "none"): "tab:red"}
+    dts = sorted({num(r, "dt") for (_, i, _), rs in groups.items() if i == "BE" for r in rs})
+    rtols = sorted({num(r, "bdf_rtol") for (_, i, _), rs in groups.items() if i == "BDF" for r in rs})
+    along = "; ".join(t for t in (
+        f"backward Euler Δt = {g(dts[-1])} … {g(dts[0])} s" if dts else "",
+        f"BDF rtol = {g(rtols[-1])} … {g(rtols[0])}" if rtols else "") if t)
     for xkey, xlabel, name in (("wall_s", "wall time [s]", "work_precision_wall.png"),
-                               ("linear_solves", "linear solves (Newton iterations)",
+                               ("linear_solves", "linear solves (Newton iterations) [–]",
                                 "work_precision_solves.png")):
-        fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.6))
+        fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.9))
         for ax, letter, ykey, ylabel in (
                 (axes[0], "a", "discrepancy", "discrepancy at t = 32 s [%]"),
                 (axes[1], "b", "midheight_error", "mid-height error at t = 32 s [%]")):
@@ -258,50 +290,43 @@ def work(rows, out):
                 rs = sorted(rs, key=lambda r: -num(r, "dt") if integ == "BE" else -num(r, "bdf_rtol"))
                 fact = sorted({int(num(r, "factorizations")) for r in rs})
                 ftxt = "/".join(str(f) for f in fact)
-                ax.loglog([num(r, xkey) for r in rs], [100 * num(r, ykey) for r in rs],
-                          ("o-" if integ == "BE" else "s--"), ms=3.5, lw=1,
+                xs, ys = [num(r, xkey) for r in rs], [100 * num(r, ykey) for r in rs]
+                ax.loglog(xs, ys, ("o-" if integ == "BE" else "s--"), ms=3.5, lw=1,
                           color=colours.get((mesh, stab), None),
-                          label=f"{mesh}, {'GLS' if stab == 'gls' else 'no stabilisation'}, "
-                                f"{names[integ]} ({ftxt} fact.)")
+                          label=f"{mesh}, {STAB.get(stab, stab)}, {names[integ]}, "
+                                f"{ftxt} factorisation{'s' if fact != [1] else ''}")
+                if integ == "BE" and mesh == "mesh 1" and stab == "none" and len(rs) > 1:
+                    # the two ends of one backward-Euler curve, to read the direction of Δt
+                    for r, x, y, ha in ((rs[0], xs[0], ys[0], "left"), (rs[-1], xs[-1], ys[-1], "right")):
+                        ax.annotate(f"Δt = {num(r, 'dt'):g} s", (x, y), xytext=(0, -5),
+                                    textcoords="offset points", ha=ha, va="top", fontsize=8,
+                                    color=colours[(mesh, stab)])
             ax.set_xlabel(xlabel), ax.set_ylabel(ylabel)
+            ax.margins(x=0.08, y=0.1)
             ax.grid(alpha=0.3, which="both")
             plain_log_ticks(ax.yaxis), plain_log_ticks(ax.xaxis)
-            ax.tick_params(which="minor", labelsize=7)
-            panel_letter(ax, letter)
+            fs.panel_label(ax, letter)
         handles, labels = axes[0].get_legend_handles_labels()
-        fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=7, frameon=False)
-        fig.tight_layout(rect=(0, 0.2, 1, 1))
+        fig.legend(handles, labels, loc="lower center", ncol=2,
+                   title=f"along each curve: {along}" if along else None)
+        fig.tight_layout(rect=(0, 0.25, 1, 1))
         save(fig, out, name, tight=False)
-
-
-def panel_letter(ax, letter):
-    ax.set_title(f"({letter})", loc="left", fontsize=10, fontweight="bold")
-
-
-def plain_log_ticks(axis):
-    """Tick labels as plain numbers (6, 8, 10) instead of 6×10⁰ on a log axis; minor ticks
-    labelled at 2, 3, 5 per decade, or all of them when the axis spans less than a decade."""
-    lo, hi = axis.get_view_interval()
-    narrow = lo > 0 and hi / lo < 10
-    axis.set_major_formatter(ticker.FuncFormatter(lambda v, _: f"{v:g}"))
-
-    def minor(v, _):
-        lead = round(v / 10 ** math.floor(math.log10(v)), 6) if v > 0 else 0
-        return f"{v:g}" if narrow or lead in (2, 3, 5) else ""
-
-    axis.set_minor_formatter(ticker.FuncFormatter(minor))
 
 
 def stability(rows, out):
     """First-step overshoot on a (Δt, k) grid per mesh, one cell per run with its value, and
     where r = c Δt / h² = 1/6 falls in each row (c = k (λ + 2μ), h the element length on the
     axis). The grid is drawn by index, not on log axes, so that close Δt (6.4 and 8 s) do not
-    overlap."""
+    overlap. Colours in bands (0.1, 1, 2, 5, 10 %: the 1 % band edge is the onset criterion of
+    the tables); each cell prints its value to two significant figures ("<0.01" below)."""
     meshes = sorted({mesh_label(r) for r in rows})
+    bounds = [0, 0.1, 1, 2, 5, 10, 15]
+    cmap = plt.get_cmap("magma_r", len(bounds) + 1)
+    norm = colors.BoundaryNorm(bounds, cmap.N, extend="max")
     for stab in ("none", "gls"):
         cols = min(len(meshes), 2)
         nrows = (len(meshes) + cols - 1) // cols
-        fig, axes = plt.subplots(nrows, cols, figsize=(3.8 * cols + 1.6, 3.0 * nrows + 0.9),
+        fig, axes = plt.subplots(nrows, cols, figsize=(fs.DOUBLE, 2.55 * nrows + 0.55),
                                  squeeze=False, layout="constrained")
         flat = [a for row in axes for a in row]
         for ax in flat[len(meshes):]:
@@ -318,19 +343,10 @@ def stability(rows, out):
             for r in sel:
                 grid[ks.index(num(r, "permeability"))][dts.index(num(r, "dt"))] = \
                     100 * num(r, "overshoot")
-            im = ax.imshow(grid, origin="lower", cmap="magma_r", vmin=0, vmax=15, aspect="auto")
-            for a, row in enumerate(grid):
-                for b, o in enumerate(row):
-                    if math.isnan(o):
-                        continue
-                    text = ("<0.01" if o < 0.01 else f"{o:.2f}" if o < 1 else
-                            f"{o:.1f}" if o < 10 else f"{o:.0f}")
-                    ax.text(b, a, text, ha="center", va="center", fontsize=7,
-                            color="white" if o > 9 else "black")
-            ax.set_xticks(range(len(dts)), [f"{d:g}" for d in dts])
-            ax.set_yticks(range(len(ks)), [f"{k:g}" for k in ks])
+            im = ax.imshow(grid, origin="lower", cmap=cmap, norm=norm, aspect="auto")
             # Threshold Δt* = h² / (6 (λ + 2μ) k) per row, placed by log interpolation between
-            # the columns; rows whose Δt* lies outside the grid get no point.
+            # the columns; rows whose Δt* lies outside the grid get no point. Drawn under the
+            # cell values, which sit on a light box.
             h, m = num(sel[0], "h_line"), num(sel[0], "lambda") + 2 * num(sel[0], "mu")
             pos = [math.log(v) for v in dts]
             xs, ys = [], []
@@ -339,46 +355,75 @@ def stability(rows, out):
                 j = next((j for j in range(len(dts) - 1) if pos[j] <= d <= pos[j + 1]), None)
                 if j is not None:
                     xs.append(j + (d - pos[j]) / (pos[j + 1] - pos[j])), ys.append(a)
-            ax.plot(xs, ys, "c-", lw=2, marker="|", ms=10)
+            ax.plot(xs, ys, "-", color="tab:cyan", lw=1.8, marker="|", ms=9, zorder=2,
+                    label="c Δt / h² = 1/6")
+            for a, row in enumerate(grid):
+                for b, o in enumerate(row):
+                    if math.isnan(o):
+                        continue
+                    ax.text(b, a, fs.percent(o), ha="center", va="center", fontsize=8, zorder=3,
+                            bbox=dict(boxstyle="round,pad=0.12", fc="white", ec="none", alpha=0.75))
+            ax.set_xticks(range(len(dts)), [f"{d:g}" for d in dts])
+            ax.set_yticks(range(len(ks)), [f"{k:g}" for k in ks])
             ax.set_xlim(-0.5, len(dts) - 0.5), ax.set_ylim(-0.5, len(ks) - 0.5)
             ax.set_xlabel("Δt [s]")
             if i % cols == 0:
                 ax.set_ylabel("k [mm⁴/(N s)]")
-            ax.set_title(f"{mesh}, h = {h:.2f} mm on the axis", fontsize=9)
-            panel_letter(ax, "abcd"[i])
-        fig.suptitle(f"First backward-Euler step, {'GLS' if stab == 'gls' else 'no stabilisation'}:"
-                     f" pressure overshoot [% of p_mid]\ncyan line: c Δt / h² = 1/6 with"
-                     f" c = k (λ + 2μ)", fontsize=10)
+            ax.set_title(f"{mesh}, h = {h:.2f} mm on the axis")
+            fs.panel_label(ax, "abcd"[i])
+        fig.suptitle(f"First backward-Euler step, {STAB[stab]}: pressure overshoot [% of p_mid]; "
+                     f"cyan line: c Δt / h² = 1/6, c = k (λ + 2μ)")
         if im is not None:
-            fig.colorbar(im, ax=flat, shrink=0.85, label="overshoot [%]")
+            cb = fig.colorbar(im, ax=flat, shrink=0.85, label="overshoot [%]", spacing="uniform")
+            cb.set_ticks(bounds, labels=[f"{b:g}" for b in bounds])
         save(fig, out, f"stability_map_{stab}.png", tight=False)
 
 
 def remedies(rows, out):
-    fig, ax = plt.subplots(figsize=(7, 5))
+    """Discrepancy at t = 32 s against wall time for the three remedies (uniform refinement,
+    GLS on the same meshes, a swept mesh graded toward the drained faces), each point labelled
+    with its number of unknowns; further variants of the graded mesh (finer plane, more layers,
+    smaller Δt, BDF, stronger grading) as single labelled points when the study has them."""
+    fig, ax = plt.subplots(figsize=(fs.DOUBLE, 3.4))
     series = {
-        "uniform refinement, no GLS": [r for r in select(rows, sweep="uniform", stabilisation="none")],
-        "GLS, same meshes": [r for r in select(rows, sweep="uniform", stabilisation="gls")],
-        "swept mesh graded toward the drained faces, no GLS": select(rows, sweep="graded"),
-        "24 layers graded 30:1 and 100:1, no GLS": select(rows, sweep="graded_ratio"),
+        "uniform refinement, no stabilisation": select(rows, sweep="uniform", stabilisation="none"),
+        "uniform refinement, GLS": select(rows, sweep="uniform", stabilisation="gls"),
+        "graded swept mesh, no stabilisation": select(rows, sweep="graded"),
     }
     for (label, rs), style in zip(series.items(), ("o-", "s-", "^-", "v-")):
         rs = [r for r in rs if r.get("status") == "completed"]
+        rs.sort(key=lambda r: num(r, "unknowns"))
         if not rs:
             continue
-        rs.sort(key=lambda r: (num(r, "unknowns"), num(r, "wall_s")))
-        ax.loglog([num(r, "wall_s") for r in rs], [100 * num(r, "discrepancy") for r in rs], style,
-                  label=label)
+        ax.plot([num(r, "wall_s") for r in rs], [100 * num(r, "discrepancy") for r in rs], style,
+                label=label)
         for r in rs:
-            text = f"{num(r, 'unknowns') / 1e3:.0f}k"
-            if r.get("sweep") == "graded_ratio":
-                text += f", {num(r, 'param:mesh.layer_grading_ratio'):g}:1"
-            ax.annotate(text, (num(r, "wall_s"), 100 * num(r, "discrepancy")),
-                        fontsize=6, xytext=(3, 3), textcoords="offset points")
-    ax.axhline(1.0, color="grey", lw=0.8)
+            ax.annotate(f"{num(r, 'unknowns') / 1e3:.0f}k", (num(r, "wall_s"), 100 * num(r, "discrepancy")),
+                        fontsize=8, xytext=(3, 3), textcoords="offset points")
+    variants = {
+        "graded_plane": lambda r: f"finer cross-section (lc {num(r, 'mesh_lc'):g})",
+        "graded_layers": lambda r: f"{int(num(r, 'mesh_layers'))} layers",
+        "graded_dt": lambda r: f"Δt = {num(r, 'dt'):g} s",
+        "graded_bdf": lambda r: f"BDF, rtol = {g(num(r, 'bdf_rtol'))}",
+        "graded_ratio": lambda r: f"grading ratio {float(r.get('param:mesh.layer_grading_ratio') or 0):g}",
+    }
+    extra = [(r, f) for s, f in variants.items() for r in select(rows, sweep=s)
+             if r.get("status") == "completed"]
+    styles = [("v", "tab:purple"), ("D", "tab:brown"), ("P", "tab:pink"), ("X", "tab:olive"),
+              ("<", "tab:cyan"), (">", "tab:gray"), ("*", "black"), ("h", "tab:purple")]
+    for (r, f), (marker, colour) in zip(extra, styles * 2):
+        ax.plot(num(r, "wall_s"), 100 * num(r, "discrepancy"), marker, color=colour, ms=5,
+                ls="none", label=f"graded, {f(r)} ({num(r, 'unknowns') / 1e3:.0f}k)")
+    ax.axhline(1.0, color="grey", lw=0.8, ls=":", label="1 % discrepancy")
+    ax.set_xscale("log"), ax.set_yscale("log")
     ax.set_xlabel("wall time [s]"), ax.set_ylabel("discrepancy at t = 32 s [%]")
-    ax.set_title("cost of accuracy, k = 1e-3, backward Euler dt = 6.4 s (labels: unknowns)", fontsize=9)
-    ax.grid(alpha=0.3, which="both"), ax.legend(fontsize=7)
+    ax.set_title("k = 1e-3, backward Euler Δt = 6.4 s unless stated\n(point labels: unknowns)")
+    lo, hi = ax.get_xlim()
+    ax.set_xlim(lo, hi * 1.6)  # room for the labels of the rightmost points
+    ax.set_ylim(0.8, max(ax.get_ylim()[1], 14))
+    ax.grid(alpha=0.3, which="both")
+    plain_log_ticks(ax.xaxis), plain_log_ticks(ax.yaxis)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), ncol=1)
     save(fig, out, "remedies_cost_of_accuracy.png")
 
 
@@ -389,6 +434,7 @@ def main():
     ap.add_argument("studies", nargs="+")
     ap.add_argument("-o", "--output", default=str(ROOT / "docs" / "figures" / "results"))
     args = ap.parse_args()
+    fs.apply()
     pathlib.Path(args.output).mkdir(parents=True, exist_ok=True)
     rows = read_rows(args.studies)
     globals()[args.kind](rows, args.output)

@@ -10,7 +10,7 @@ For a time-error table (columns error_pressure, ...), writes per scene:
                                against wall time and Newton iterations
 For a failure table (column divisor): the largest converging fixed step
 against the applied strain, with and without stabilisation (<scene>.png).
-PNG at 200 dpi into DIR (default: docs/figures/integrators).
+PNG at 200 dpi with a PDF beside each into DIR (default: docs/figures/integrators).
 --markdown prints the tables of docs/integrators.md instead: every run, and for each scene and
 stabilisation the cheapest run of each method whose pressure time error is <= 1e-3 and 1e-4.
 """
@@ -26,6 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
+import figure_style as fs  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 METHODS = [  # (method column, legend, style)
     ("backward_euler", "backward Euler, fixed Δt", dict(color="tab:blue", marker="o", ls="-")),
@@ -34,11 +36,12 @@ METHODS = [  # (method column, legend, style)
     ("bdf", "BDF (IDA, orders 1–5)", dict(color="tab:green", marker="^", ls="-.")),
 ]
 STAB = {"gls": "GLS", "flux_perturbation": "flux perturbation", "none": "no stabilisation"}
-COST = {"wall_s": "wall time [s]", "factorizations": "factorisations",
-        "newton_iterations": "Newton iterations", "steps": "time steps"}
+COST = {"wall_s": "wall time [s]", "factorizations": "factorisations [–]",
+        "newton_iterations": "Newton iterations [–]", "steps": "time steps [–]"}
 MEASURE = {"pressure": "time error of the line pressure [-]",
            "reaction": "time error of the platen reaction [-]",
            "displacement": "time error of the settlement u_z [-]"}
+SHORT = {"pressure": "pressure", "reaction": "reaction", "displacement": "settlement"}
 SCENE = {"paper_mesh1": "paper's reference loading, mesh 1 (1 % strain)",
          "paper_mesh2": "paper's reference loading, mesh 2 (1 % strain)",
          "confined_compression": "ramp confined compression (Mow et al.)",
@@ -65,13 +68,12 @@ def group_key(row):
 
 
 def panel_letter(ax, i):
-    ax.text(-0.02, 1.02, f"({chr(ord('a') + i)})", transform=ax.transAxes, fontsize=11,
-            fontweight="bold", ha="right", va="bottom")
+    fs.panel_label(ax, chr(ord("a") + i))
 
 
 def time_error_figure(rows, measure, costs, out, name, title):
     stabs = [s for s in STAB if any(r["stabilisation"] == s for r in rows)]
-    fig, axes = plt.subplots(len(costs), len(stabs), figsize=(4.2 * len(stabs), 3.4 * len(costs)),
+    fig, axes = plt.subplots(len(costs), len(stabs), figsize=(fs.DOUBLE, 2.1 * len(costs) + 1.0),
                              squeeze=False, sharey=True)
     col = f"error_{measure}"
     letter = 0
@@ -116,7 +118,7 @@ def time_error_figure(rows, measure, costs, out, name, title):
             ax.grid(True, which="major", alpha=0.3)
             ax.set_xlabel(COST[cost])
             if j == 0:
-                ax.set_ylabel(MEASURE[measure])
+                ax.set_ylabel(f"time error, {SHORT[measure]} [–]")
             if i == 0:
                 ax.set_title(STAB[stab])
             panel_letter(ax, letter)
@@ -132,17 +134,16 @@ def time_error_figure(rows, measure, costs, out, name, title):
                bbox_to_anchor=(0.5, 0.0))
     fig.suptitle(title)
     nrows = -(-len(labels) // ncol)
-    fig.tight_layout(rect=(0, (0.035 * nrows + 0.01) * 3 / (len(costs) + 1), 1, 0.97))
-    path = out / name
-    fig.savefig(path, dpi=200)
-    plt.close(fig)
-    print(path)
+    height = fig.get_size_inches()[1]
+    fig.tight_layout(rect=(0, (0.16 * nrows + 0.1) / height, 1, 1 - 0.3 / height))
+    for path in fs.save(fig, out / name, tight=False):
+        print(path)
 
 
 def failure_figure(rows, out, name):
     """(a) largest converging step against strain; (b) the platen's strain increment per step at
     that step. A combination whose coarsest step (t_end) converged is a lower bound (arrow)."""
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.3))
     styles = {"gls": dict(color="tab:blue", marker="o", ms=10, mfc="none", mew=1.6, ls="-"),
               "none": dict(color="tab:red", marker="s", ms=5, ls="--"),
               "flux_perturbation": dict(color="tab:purple", marker="^", ms=6, ls=":")}
@@ -168,7 +169,7 @@ def failure_figure(rows, out, name):
     axes[0].plot([100 * x for x in xs], [t_end[x] for x in xs], color="grey", ls=":", lw=1,
                  label="t_end (the whole load in one step)")
     axes[0].set_ylabel("largest converging Δt [s]")
-    axes[1].set_ylabel("platen strain increment per step at that Δt [%]")
+    axes[1].set_ylabel("platen strain per step at that Δt [%]")
     for i, ax in enumerate(axes):
         ax.set_xscale("log")
         ax.set_yscale("log" if i == 0 else "linear")
@@ -176,15 +177,15 @@ def failure_figure(rows, out, name):
             ax.set_ylim(bottom=0)
         ax.set_xlabel("applied compressive strain [%]")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(frameon=False, fontsize=9)
+        ax.legend()
+        fs.plain_log_ticks(ax.xaxis)
+        if i == 0:
+            fs.plain_log_ticks(ax.yaxis)
         panel_letter(ax, i)
-    fig.suptitle("Backward Euler without cut-back, mesh 1, k = 1e-3, 2.5 µm/s "
-                 "(Δt = t_end / N, N = 1, 2, 3, 4, 6, 8, 12, 16; arrow: t_end itself converged)", fontsize=10)
-    fig.tight_layout()
-    path = out / name
-    fig.savefig(path, dpi=200)
-    plt.close(fig)
-    print(path)
+    fig.suptitle("Backward Euler without cut-back, mesh 1, k = 1e-3, 2.5 µm/s\n"
+                 "(Δt = t_end / N, N = 1, 2, 3, 4, 6, 8, 12, 16; arrow: t_end itself converged)")
+    for path in fs.save(fig, out / name):
+        print(path)
 
 
 def param_text(r):
@@ -314,6 +315,7 @@ def main():
             markdown(path)
         return
     args.output.mkdir(parents=True, exist_ok=True)
+    fs.apply()
     for path in args.csv:
         rows = read(path)
         if not rows:

@@ -3,17 +3,22 @@
 slopes 3 (P2 displacement) and 2 (P1 pressure).
 
 usage: plot_mms.py CSV [CSV ...] OUT.png [--title TITLE]
+Writes OUT.png (200 dpi) and OUT.pdf beside it.
 CSV: a table written by the test_mms tests into $BIPHASIC_VERIFICATION_OUT/mms/ (columns h,
 error_u_l2, error_p_l2, ...). Several tables share the axes, labelled by their file names.
 """
 import argparse
 import pathlib
+import sys
 
 import matplotlib
 import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import figure_style as fs  # noqa: E402
 
 
 def read_table(path):
@@ -36,16 +41,24 @@ def main():
     if len(args.tables) < 2:
         parser.error("give at least one CSV table and the output PNG")
     *tables, out = args.tables
+    if len(tables) == 1 and pathlib.Path(tables[0]).is_dir():
+        # called by plot_verification.py as `plot_mms.py CSV_DIR FIG_DIR`: this figure is drawn
+        # from chosen tables instead (docs/verification_mms.md)
+        print("  takes CSV tables (docs/verification_mms.md); skipped")
+        return
 
-    fig, ax = plt.subplots(figsize=(6.0, 4.5))
+    fs.apply()
+    fig, ax = plt.subplots(figsize=(fs.SINGLE, 3.2 + 0.17 * 2 * len(tables)))
     markers = ["o", "s", "^", "D", "v"]
     h_all = None
     for i, path in enumerate(tables):
         h, eu, ep = read_table(path)
-        name = pathlib.Path(path).stem
+        name = (pathlib.Path(path).stem.removeprefix("convergence").replace("_", " ")
+                .replace("fine", "").strip() or "default")
         m = markers[i % len(markers)]
-        ax.loglog(h, eu, "-" + m, color="tab:blue", label=f"displacement ‖u−u_h‖ ({name})")
-        ax.loglog(h, ep, "-" + m, color="tab:red", label=f"pressure ‖p−p_h‖ ({name})")
+        suffix = f" ({name})" if len(tables) > 1 else ""
+        ax.loglog(h, eu, "-" + m, color="tab:blue", label=f"displacement ‖u − u_h‖{suffix}")
+        ax.loglog(h, ep, "-" + m, color="tab:red", label=f"pressure ‖p − p_h‖{suffix}")
         if i == 0:
             h_all, eu0, ep0 = h, eu, ep
     reference(ax, h_all, eu0, 3, "slope 3")
@@ -54,10 +67,10 @@ def main():
     ax.set_ylabel("L² error at t = 1 s")
     ax.set_title(args.title)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out, dpi=150)
-    print(f"wrote {out}")
+    fs.plain_log_ticks(ax.xaxis)  # h spans about a decade: 0.1, 0.2, 0.3, 0.5
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2))
+    for path in fs.save(fig, out):
+        print(f"wrote {path}")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,8 @@
 """First-step pressure overshoot against r = c Δt / h², with and without stabilisation.
 
 usage: plot_oscillation.py CSV_DIR FIG_DIR
-(reads CSV_DIR/oscillation/overshoot_nz*.csv, writes FIG_DIR/oscillation.png) and prints the
+(reads CSV_DIR/oscillation/overshoot_nz*.csv, writes FIG_DIR/oscillation.png at 200 dpi and
+FIG_DIR/oscillation.pdf) and prints the
 overshoot table and the thresholds.
 """
 import pathlib
@@ -12,11 +13,11 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from verification_csv import read, save  # noqa: E402
+from verification_csv import fs, read, save  # noqa: E402
 
 # 1D P2/P1, backward Euler, first step (docs/verification.md, section 3).
 ONE_D = {0.01: 0.2415, 0.05: 0.156, 0.1: 0.0774}
-LABELS = {"none": "none", "gls": "GLS", "flux_perturbation": "flux perturbation"}
+LABELS = {"none": "no stabilisation", "gls": "GLS", "flux_perturbation": "flux perturbation"}
 
 
 def main():
@@ -26,7 +27,7 @@ def main():
     if not files:
         print("  no oscillation/ results; skipped")
         return
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+    fig, ax = plt.subplots(figsize=(fs.DOUBLE, 3.2))
     floor = 1e-5
     path = files[0]  # the curve depends on r alone: other nz give the same values
     nz = path.stem.split("nz")[1]
@@ -41,21 +42,20 @@ def main():
                 label=f"{LABELS[name]}: max over the vertices")
         if name == "none":
             ax.plot(r_values, [max(floor, r["level_mean_overshoot"]) for r in sel], ":",
-                    color="C3", label="none: layers' mean pressure")
+                    color="C3", label="no stabilisation: layers' mean pressure")
             if "line_oscillation" in sel[0]:
                 ax.plot(r_values, [max(floor, r["line_oscillation"]) for r in sel], "-.",
-                        color="C1", label="none: oscillation measure on the probe edge")
+                        color="C1", label="no stabilisation: oscillation measure, probe edge")
     ax.plot(list(ONE_D), list(ONE_D.values()), "kx", ms=8, label="1D P2/P1 (notes)")
     ax.axvline(1 / 6, color="k", lw=0.8, ls=":", label="1D threshold r = 1/6")
-    ax.axhline(1e-3, color="gray", lw=0.8, ls="--")
+    ax.axhline(1e-3, color="gray", lw=0.8, ls="--", label="0.1 % level")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_ylim(floor, 1.5)
-    ax.set_xlabel("r = c Δt / h²")
-    ax.set_ylabel("first-step overshoot (max p − q) / q")
-    ax.set_title(f"step load, backward Euler, first step; {nz} layers of cubic cells (Kuhn split)",
-                 fontsize=9)
-    ax.legend(fontsize=7)
+    ax.set_xlabel("r = c Δt / h² [–]")
+    ax.set_ylabel("first-step overshoot (max p − q) / q [–]")
+    ax.set_title(f"step load, first backward-Euler step, {nz} layers")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0))
     save(fig, fig_dir, "oscillation")
 
     by = {(r["r"], r["stabilisation"]): r for r in rows}

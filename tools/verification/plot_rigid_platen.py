@@ -14,7 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from verification_csv import read  # noqa: E402
+from verification_csv import fs, read, save  # noqa: E402
 
 LABELS = {"bdf": "BDF (rtol 1e-6)", "backward_euler": "backward Euler",
           "axisymmetric_bdf": "axisymmetric, BDF",
@@ -28,8 +28,7 @@ def main():
     if not mandel.is_dir() and not creep.is_dir():
         print("  no mandel/ or confined_creep/ results; skipped")
         return
-    plt.rcParams.update({"font.size": 9, "axes.titlesize": 9, "legend.fontsize": 8})
-    fig, (ax_c, ax_p, ax_s) = plt.subplots(1, 3, figsize=(7.4, 2.9))
+    fig, (ax_c, ax_p, ax_s) = plt.subplots(1, 3, figsize=(fs.DOUBLE, 3.4))
 
     # (a) Mandel: centre pressure against T.
     if mandel.is_dir():
@@ -49,10 +48,10 @@ def main():
                       label="series")
         ax_c.axhline(0.5, color="gray", lw=0.6)
         ax_c.set_xscale("log")
-        ax_c.set_xlabel("T = c t / a²")
-        ax_c.set_ylabel("centre pressure p / σ₀")
-        ax_c.set_title("(a) Mandel, centre", loc="left")
-        ax_c.legend(frameon=False)
+        ax_c.set_xlabel("T = c t / a² [–]")
+        ax_c.set_ylabel("centre pressure p / σ₀ [–]")
+        ax_c.set_title("Mandel, centre")
+        ax_c.legend()
 
         # (b) Mandel: midplane profiles at the checked times, BDF run.
         path = mandel / "bdf_profiles.csv"
@@ -66,10 +65,12 @@ def main():
                           color=colour, lw=1, label=f"T = {T:g}")
                 ax_p.plot([r["x_over_a"] for r in sel], [r["p_computed"] for r in sel], "o",
                           ms=2, color=colour)
-            ax_p.set_xlabel("x / a  (series: lines, BDF: dots)")
-            ax_p.set_ylabel("p / σ₀")
-            ax_p.set_title("(b) Mandel, midplane", loc="left")
-            ax_p.legend(frameon=False, fontsize=6.5, loc="lower left")
+            ax_p.set_xlabel("x / a [–]")
+            ax_p.set_ylabel("pressure p / σ₀ [–]")
+            ax_p.set_title("Mandel, midplane")
+            fig.legend(*ax_p.get_legend_handles_labels(), loc="lower center", ncol=len(times),
+                       handlelength=1.2, columnspacing=1.0,
+                       title="(b) at T: series (lines), BDF (dots)")
 
     # (c) Confined creep: settlement against T.
     if creep.is_dir():
@@ -85,17 +86,13 @@ def main():
             ax_s.plot([r["T"] for r in series], [r["settlement_series"] for r in series], "k:",
                       lw=1.5, label="Terzaghi U(T)")
         ax_s.set_xscale("log")
-        ax_s.set_xlabel("T = c t / H²")
-        ax_s.set_ylabel("settlement / (q H / H_A)")
-        ax_s.set_title("(c) confined creep", loc="left")
-        ax_s.legend(frameon=False, fontsize=6.5, loc="lower right")
-
-    fig.tight_layout()
-    fig_dir.mkdir(parents=True, exist_ok=True)
-    for ext, kw in (("png", {"dpi": 200}), ("pdf", {})):
-        out = fig_dir / f"rigid_platen.{ext}"
-        fig.savefig(out, **kw)
-        print(f"  wrote {out}")
+        ax_s.set_xlabel("T = c t / H² [–]")
+        ax_s.set_ylabel("settlement / (q H / H_A) [–]")
+        ax_s.set_title("confined creep")
+        ax_s.legend(loc="upper left", borderaxespad=0.2)
+    fs.letters([ax_c, ax_p, ax_s])
+    fig.tight_layout(rect=(0, 0.16 if fig.legends else 0, 1, 1))
+    save(fig, fig_dir, "rigid_platen", tight=False)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Terzaghi consolidation: computed pressure isochrones and settlement against the series.
 
-usage: plot_terzaghi.py CSV_DIR FIG_DIR   (reads CSV_DIR/terzaghi/, writes FIG_DIR/terzaghi.png)
+usage: plot_terzaghi.py CSV_DIR FIG_DIR   (reads CSV_DIR/terzaghi/, writes FIG_DIR/terzaghi.png
+at 200 dpi and FIG_DIR/terzaghi.pdf)
 Also prints the error table of every run (max |p_h - p|/q and max |U_h - U| over the tabulated
 depths and times).
 """
@@ -12,7 +13,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from verification_csv import print_errors, read, save  # noqa: E402
+from verification_csv import fs, label, print_errors, read, save  # noqa: E402
 
 
 def main():
@@ -21,7 +22,7 @@ def main():
         print("  no terzaghi/ results; skipped")
         return
     runs = sorted(p.name[: -len("_profiles.csv")] for p in csv_dir.glob("*_profiles.csv"))
-    fig, (ax_p, ax_u, ax_1) = plt.subplots(1, 3, figsize=(15, 4.8))
+    fig, (ax_p, ax_u, ax_1) = plt.subplots(1, 3, figsize=(fs.DOUBLE, 3.6))
 
     # (a) Isochrones: the series on the finest BDF run's nodes, computed values as markers.
     bdf = [r for r in runs if r.startswith("bdf_")]
@@ -37,25 +38,25 @@ def main():
         for run, marker in zip(shown, "os"):
             pts = [r for r in read(csv_dir / f"{run}_profiles.csv") if r["T"] == T]
             ax_p.plot([r["p_computed"] for r in pts], [r["zeta_over_H"] for r in pts], marker,
-                      color=colour, ms=4, mfc="none" if marker == "s" else colour)
+                      color=colour, ms=3, mfc="none" if marker == "s" else colour)
     ax_p.invert_yaxis()
-    ax_p.set_xlabel("p / q")
-    ax_p.set_ylabel("depth below the drained face ζ / H")
-    ax_p.set_title("isochrones: series (lines), " + ", ".join(
-        f"{r} ({m})" for r, m in zip(shown, ["dots", "squares"])), fontsize=9)
-    ax_p.legend(fontsize=8)
+    ax_p.set_xlabel("pressure p / q [–]")
+    ax_p.set_ylabel("depth below the drained face ζ / H [–]")
+    ax_p.set_title("isochrones")
+    ax_p.legend(loc="lower left", handlelength=1.0, borderaxespad=0.2)
+    print("  (a): series (lines), " + ", ".join(
+        f"{label(r)} ({m})" for r, m in zip(shown, ["dots", "open squares"])))
 
     # (b) Settlement error against time.
     for run in runs:
         rows = [r for r in read(csv_dir / f"{run}_settlement.csv") if r["T"] > 0]
         ax_u.plot([r["T"] for r in rows], [abs(r["U_computed"] - r["U_series"]) for r in rows],
-                  "-", lw=1, label=run)
+                  "-", lw=1, label=label(run))
     ax_u.set_xscale("log")
     ax_u.set_yscale("log")
-    ax_u.set_xlabel("T = c t / H²")
-    ax_u.set_ylabel("|U_h − U|,  U = settlement / (q H / H_A)")
-    ax_u.set_title("settlement error against the series")
-    ax_u.legend(fontsize=8)
+    ax_u.set_xlabel("time factor T = c t / H² [–]")
+    ax_u.set_ylabel("settlement error |U_h − U| [–]")
+    ax_u.set_title("settlement, U = s / (q H / H_A)")
 
     # (c) The first backward-Euler step (r = 0.01): undrained body, oscillation at the drained face.
     first = csv_dir / "first_step.csv"
@@ -64,11 +65,18 @@ def main():
         ax_1.plot([r["p_computed"] for r in rows], [r["zeta_over_H"] for r in rows], "o-", ms=3)
         ax_1.axvline(1.0, color="k", lw=0.8, ls="--")
         ax_1.invert_yaxis()
-        ax_1.set_xlabel("p / q")
-        ax_1.set_ylabel("ζ / H")
-        ax_1.set_title("first backward-Euler step, r = c Δt / h² = 0.01\n(edge x = y = 0, no "
-                       "stabilisation)", fontsize=9)
-    save(fig, fig_dir, "terzaghi")
+        ax_1.set_xlabel("pressure p / q [–]")
+        ax_1.set_ylabel("ζ / H [–]")
+        ax_1.set_title("first step, r = c Δt / h² = 0.01")
+    fs.letters([ax_p, ax_u, ax_1])
+    handles, labels = ax_u.get_legend_handles_labels()
+    # the markers of (a)
+    for run, marker in zip(shown, "os"):
+        handles += ax_p.plot([], [], marker, color="k", ms=3, mfc="none" if marker == "s" else "k")
+        labels.append(f"(a) {'dots' if marker == 'o' else 'squares'}: {label(run)}")
+    fig.legend(handles, labels, loc="lower center", ncol=3)
+    fig.tight_layout(rect=(0, (0.16 * ((len(labels) + 2) // 3) + 0.08) / 3.6, 1, 1))
+    save(fig, fig_dir, "terzaghi", tight=False)
     print_errors(csv_dir, [("max_pressure_error", "max |p_h - p|/q"),
                               ("max_settlement_error", "max |U_h - U|")])
 

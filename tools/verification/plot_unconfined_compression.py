@@ -3,7 +3,8 @@
 platen force and centre pressure against the series for a short ramp.
 
 usage: plot_unconfined_compression.py CSV_DIR FIG_DIR
-(reads CSV_DIR/unconfined_compression/, writes FIG_DIR/unconfined_compression.png) and prints
+(reads CSV_DIR/unconfined_compression/, writes FIG_DIR/unconfined_compression.png at 200 dpi
+and FIG_DIR/unconfined_compression.pdf) and prints
 the error table of every run (max errors over tau >= 0.01).
 """
 import math
@@ -14,7 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from verification_csv import print_errors, read, save  # noqa: E402
+from verification_csv import fs, label, print_errors, read, save  # noqa: E402
 
 
 def lc_of(run):
@@ -30,7 +31,7 @@ def main():
         return
     runs = sorted((p.stem for p in csv_dir.glob("*.csv") if not p.stem.endswith("_errors")),
                   key=lc_of, reverse=True)
-    fig, (ax_f, ax_p, ax_e) = plt.subplots(1, 3, figsize=(17, 4.8))
+    fig, (ax_f, ax_p, ax_e) = plt.subplots(1, 3, figsize=(fs.DOUBLE, 3.2))
     base = [r for r in read(csv_dir / f"{runs[-1]}.csv") if r["tau"] > 0]
     tau = [r["tau"] for r in base]
     ax_f.plot(tau, [r["force_series"] for r in base], "k-", lw=2, label="series")
@@ -43,29 +44,33 @@ def main():
                  for x in (lo + (hi - lo) * k / 29 for k in range(30))}
         shown = [rows[i] for i in sorted(picks)]
         ax_f.plot([r["tau"] for r in shown], [r["force_computed"] for r in shown], marker, ms=4,
-                  mfc="none", color=colour, label=run)
+                  mfc="none", color=colour, label=label(run))
         ax_p.plot([r["tau"] for r in shown], [r["pressure_computed"] for r in shown], marker,
-                  ms=4, mfc="none", color=colour, label=run)
+                  ms=4, mfc="none", color=colour, label=label(run))
         ax_e.plot([r["tau"] for r in rows],
                   [abs(r["force_computed"] - r["force_series"]) for r in rows], "-", lw=1,
-                  color=colour, label=f"{run}: force")
+                  color=colour)
         ax_e.plot([r["tau"] for r in rows],
                   [abs(r["pressure_computed"] - r["pressure_series"]) for r in rows], "--",
-                  lw=1, color=colour, label=f"{run}: centre pressure")
+                  lw=1, color=colour)
+    ax_e.plot([], [], "k-", lw=1, label="force")
+    ax_e.plot([], [], "k--", lw=1, label="centre pressure")
     for ax in (ax_f, ax_p, ax_e):
         ax.set_xscale("log")
-        ax.set_xlabel("τ = c t / a²")
-        ax.legend(fontsize=8)
-    ax_f.set_ylabel("platen force F / (π a² ε₀ E)")
-    ax_f.set_title("force on the top platen (reaction), ramp over τ₀ = 1.1e-3, ν = 0.1",
-                   fontsize=9)
+        ax.set_xlabel("τ = c t / a² [–]")
+    ax_f.legend(loc="lower left")
+    ax_e.legend()
+    ax_f.set_ylabel("platen force F / (π a² ε₀ E) [–]")
+    ax_f.set_title("platen force")
     ax_p.axhline(1.0, color="gray", lw=0.8, ls=":")
-    ax_p.set_ylabel("centre pressure p(0, h/2) / (μ ε₀)")
-    ax_p.set_title("pressure on the axis at mid-height", fontsize=9)
+    ax_p.set_ylabel("centre pressure p(0, h/2) / (μ ε₀) [–]")
+    ax_p.set_title("pressure at the centre")
     ax_e.axvline(0.01, color="gray", lw=0.8, ls=":")
     ax_e.set_yscale("log")
-    ax_e.set_ylabel("|computed − series| (normalised as left)")
-    ax_e.set_title("errors (compared from τ = 0.01 on)", fontsize=9)
+    ax_e.set_ylabel("|computed − series| (scaled as in a, b) [–]")
+    ax_e.set_title("errors, compared from τ = 0.01")
+    fig.suptitle("ramp over τ₀ = 1.1e-3, ν = 0.1")
+    fs.letters([ax_f, ax_p, ax_e])
     save(fig, fig_dir, "unconfined_compression")
     print_errors(csv_dir, [("max_force_error", "max |F_h - F|/(pi a^2 eps0 E)"),
                               ("max_pressure_error", "max |p_h - p|/(mu eps0)"),

@@ -1,6 +1,38 @@
-"""Shared by the plot_*.py scripts: reading the verification CSVs, saving a figure, and printing
-a run's error table."""
+"""Shared by the plot_*.py scripts: reading the verification CSVs, human labels for the runs,
+saving a figure (PNG at 200 dpi beside a vector PDF, print style of tools/figure_style.py) and
+printing a run's error table."""
 import csv
+import pathlib
+import re
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import figure_style as fs  # noqa: E402
+
+fs.apply()
+
+WORDS = {"bdf": "BDF", "be": "backward Euler", "backward": "backward Euler",
+         "holmes": "Holmes–Mow", "gls": "GLS", "none": "no stabilisation",
+         "axisymmetric": "axisymmetric", "tetrahedral": "tetrahedral column",
+         "step": "step load", "ramp": "ramped load"}
+
+
+def label(run):
+    """A run's folder/file name as words: bdf_nz20 -> "BDF, 20 layers", be_nz20_dt5 ->
+    "backward Euler, 20 layers, Δt = 5 s", be_lc0.15_dt1 -> "backward Euler, mesh size 0.15,
+    Δt = 1 s", holmes_mow_bdf_nz20 -> "Holmes–Mow, BDF, 20 layers"."""
+    parts = []
+    for tok in run.split("_"):
+        if tok in ("euler", "mow"):
+            continue
+        m = re.fullmatch(r"(nz|lc|dt|r)([0-9.eE+-]+)", tok)
+        if m:
+            key, v = m.groups()
+            parts.append({"nz": f"{v} layers", "lc": f"mesh size {v}", "dt": f"Δt = {v} s",
+                          "r": f"r = {v}"}[key])
+        else:
+            parts.append(WORDS.get(tok, tok))
+    return ", ".join(parts)
 
 
 def read(path):
@@ -12,12 +44,10 @@ def read(path):
                 for r in csv.DictReader(f)]
 
 
-def save(fig, fig_dir, name):
-    """Writes FIG_DIR/<name>.png."""
-    fig.tight_layout()
-    out = fig_dir / f"{name}.png"
-    fig.savefig(out, dpi=120)
-    print(f"  wrote {out}")
+def save(fig, fig_dir, name, tight=True):
+    """Writes FIG_DIR/<name>.png (200 dpi) and FIG_DIR/<name>.pdf (tight: lay out first)."""
+    for out in fs.save(fig, pathlib.Path(fig_dir) / name, tight=tight):
+        print(f"  wrote {out}")
 
 
 def print_errors(csv_dir, columns):
