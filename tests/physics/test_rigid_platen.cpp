@@ -190,7 +190,8 @@ TEST(RigidPlaten, PlatenAreaIsTheLoadedArea) {
 }
 
 TEST(RigidPlaten, ApplyDirichletTiesThePlatenToItsMaster) {
-  SectionProblem problem(small_section(), SectionModel::PlaneStrain, platen_config(false, true));
+  const SectionMesh mesh = small_section();
+  SectionProblem problem(mesh, SectionModel::PlaneStrain, platen_config(false, true));
   std::vector<double> y(static_cast<std::size_t>(problem.size()), 0.0), ydot = y;
   const RigidPlaten& platen = problem.platens().platens()[0];
   y[static_cast<std::size_t>(platen.master)] = -0.3;
@@ -208,7 +209,8 @@ TEST(RigidPlaten, RefusesAPlatenNodeHeldAlongItsComponent) {
   Config cfg = platen_config(false, true);
   cfg.bcs.push_back({BcType::Displacement, "lateral", 1, 0.0, {}, ""});  // holds the corner's u_y
   try {
-    SectionProblem problem(small_section(), SectionModel::PlaneStrain, cfg);
+    const SectionMesh mesh = small_section();
+    SectionProblem problem(mesh, SectionModel::PlaneStrain, cfg);
     FAIL() << "accepted";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("boundary[0] (rigid_platen on 'top'): node"),
@@ -222,7 +224,8 @@ TEST(RigidPlaten, RefusesTwoPlatensSharingANode) {
   Config cfg = platen_config(false, true);
   cfg.bcs.push_back({BcType::RigidPlaten, "lateral", 0, 0.01, {}, ""});
   try {
-    SectionProblem problem(small_section(), SectionModel::PlaneStrain, cfg);
+    const SectionMesh mesh = small_section();
+    SectionProblem problem(mesh, SectionModel::PlaneStrain, cfg);
     FAIL() << "accepted";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("a node can belong to one rigid platen only"),

@@ -35,6 +35,8 @@ class BiphasicProblem final : public BiphasicModel {
   /// every quadrature point at t = 0 and t = time.t_end). Throws std::runtime_error naming the
   /// boundary condition or the formula on inconsistent input.
   BiphasicProblem(const Mesh& mesh, const Config& config);
+  /// The problem keeps a reference to its mesh: a temporary mesh would dangle.
+  BiphasicProblem(Mesh&&, const Config&) = delete;
 
   /// Body force b(X, t) per unit reference volume [N/mm³]: the momentum rows gain
   /// −∫Ω₀ f·b dX, integrated with the element's quadrature rule. `rate` is ∂b/∂t, used by

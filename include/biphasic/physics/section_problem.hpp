@@ -47,6 +47,8 @@ class SectionProblem final : public BiphasicModel {
   /// body_force.z must be zero). Throws std::runtime_error naming the boundary condition or
   /// the element on inconsistent input.
   SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config);
+  /// The problem keeps a reference to its mesh: a temporary mesh would dangle.
+  SectionProblem(SectionMesh&&, SectionModel, const Config&) = delete;
 
   /// Body force b(X, t) [N/mm³] with X = (x, y, 0): the momentum rows gain −∫Ω₀ f·b dX (its
   /// third component is ignored). `rate` = ∂b/∂t (central differences without it).
