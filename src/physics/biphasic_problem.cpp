@@ -78,14 +78,8 @@ int plane_axis(const Mesh& mesh, const Boundary& b, const std::string& label) {
 
 /// The solution's displacement [mm] and pressure [MPa] scales implied by the boundary data and
 /// the solid's P-wave modulus HA [MPa].
-std::pair<double, double> data_scales(const Mesh& mesh, const Config& config, double HA) {
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (const auto& x : mesh.nodes)
-    for (int c = 0; c < 3; ++c) {
-      lo(c) = std::min(lo(c), x[c]);
-      hi(c) = std::max(hi(c), x[c]);
-    }
-  const Vec3 extent = (hi - lo).cwiseMax(1e-300);
+std::pair<double, double> data_scales(const Vec3& body_extent, const Config& config, double HA) {
+  const Vec3 extent = body_extent.cwiseMax(1e-300);
   double u = 0.0, p = 0.0;
   for (const BoundaryCondition& bc : config.bcs) {
     const double v = largest_value(bc, config.curves, config.time.t_end);
@@ -113,13 +107,31 @@ std::pair<double, double> data_scales(const Mesh& mesh, const Config& config, do
 
 }  // namespace
 
-BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
+BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, AssemblyScope scope)
     : mesh_(mesh),
       curves_(config.curves),
       laws_{make_material_laws(config.material)},
       platens_(mesh, config, curves_),
       pattern_(mesh, platens_.couplings()),
       colours_(colour_elements(mesh)) {
+  const bool whole = scope.whole_mesh();
+  if (!whole && !platens_.empty())
+    throw std::runtime_error(
+        "rigid_platen: not available on a partitioned mesh (run on one process)");
+  for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
+    if (whole || scope.element_owned[static_cast<std::size_t>(e)]) elements_.push_back(e);
+  if (!whole) {
+    for (std::vector<Index>& colour : colours_)
+      std::erase_if(colour,
+                    [&](Index e) { return !scope.element_owned[static_cast<std::size_t>(e)]; });
+    std::erase_if(colours_, [](const std::vector<Index>& c) { return c.empty(); });
+  }
+  // Face loads go to the rows of owned nodes only (row → node: u rows 3n + c, p rows by vertex).
+  auto row_owned = [&](Index row) {
+    if (whole) return true;
+    const Index node = row < pattern_.num_u() ? row / 3 : row - pattern_.num_u();
+    return scope.node_owned[static_cast<std::size_t>(node)] != 0;
+  };
   // Reference geometry per element and quadrature point; GLS coefficients.
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
   for (const QuadraturePoint& qp : rule.points) point_p2_.push_back(p2_values(qp.xi));
@@ -152,8 +164,11 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   std::vector<char> used(laws_.size(), 0);
   if (element_law_.empty()) {
     used[0] = 1;
-  } else {
+  } else if (whole) {
     for (const int l : element_law_) used[static_cast<std::size_t>(l)] = 1;
+  } else {
+    for (std::size_t r = 0; r < region_law.size(); ++r)
+      if (scope.region_used[r]) used[static_cast<std::size_t>(region_law[r])] = 1;
   }
   double HA = 0.0, k_ref = 0.0;
   for (std::size_t l = 0; l < laws_.size(); ++l)
@@ -189,6 +204,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   if (absent(gls_c_)) gls_c_.clear();
   if (absent(flux_beta_)) flux_beta_.clear();
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
+  if (!whole) mean_length = scope.mean_element_length;
   row_scale_u_ = HA * mean_length;
   row_scale_p_ = k_ref * mean_length;
 
@@ -270,7 +286,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
           }
         }
         NodalLoad nl{{}, bc.type == BcType::Traction ? 1.0 : bc.value, curve};
-        nl.entries.assign(load.begin(), load.end());
+        for (const auto& entry : load)
+          if (row_owned(entry.first)) nl.entries.push_back(entry);
         nodal_loads_.push_back(std::move(nl));
         break;
       }
@@ -281,17 +298,11 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
   dirichlet_ = std::move(rows_held.rows());
   dirichlet_held_ = std::move(rows_held.constrained());
   constrained_ = platens_.tie(dirichlet_held_, pattern_, row_scale_u_, config.bcs, held_rows_);
-  solution_scales_ = data_scales(mesh, config, modulus_);
-  if (!platens_.empty()) {
-    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-    for (const auto& x : mesh.nodes)
-      for (int c = 0; c < 3; ++c) {
-        lo(c) = std::min(lo(c), x[c]);
-        hi(c) = std::max(hi(c), x[c]);
-      }
-    const Vec3 extent = hi - lo;
+  const auto [lower, upper] = whole ? bounding_box(mesh) : std::pair{scope.lower, scope.upper};
+  const Vec3 extent(upper[0] - lower[0], upper[1] - lower[1], upper[2] - lower[2]);
+  solution_scales_ = data_scales(extent, config, modulus_);
+  if (!platens_.empty())
     platens_.raise_solution_scales(config, modulus_, extent.data(), solution_scales_);
-  }
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -325,9 +336,9 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config)
 
 void BiphasicProblem::check_load_formulas(const Config& config, double t) const {
   const auto& loads = config.loads;
-  for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
+  for (const Index e : elements_)
     for (std::size_t q = 0; q < point_p2_.size(); ++q) {
-      const Vec3 X = point_position(static_cast<Index>(e), q);
+      const Vec3 X = point_position(e, q);
       for (int c = 0; c < 4; ++c) {
         const Expression& f = c < 3 ? loads.body_force[c] : loads.fluid_source;
         const double v = f(X(0), X(1), X(2), t);
@@ -390,11 +401,11 @@ double BiphasicProblem::dirichlet_rate(const Dirichlet& d, double t) const {
 void BiphasicProblem::add_volume_loads(double t, bool rate, double* out) const {
   const VolumeLoads& L = loads_;
   if (!L.b && !L.s) return;
-  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
-    const Tet10& tet = mesh_.tets[e];
+  for (const Index e : elements_) {
+    const Tet10& tet = mesh_.tets[static_cast<std::size_t>(e)];
     for (std::size_t q = 0; q < point_p2_.size(); ++q) {
-      const PointGeometry& g = geometry_[e][q];
-      const Vec3 X = point_position(static_cast<Index>(e), q);
+      const PointGeometry& g = geometry_[static_cast<std::size_t>(e)][q];
+      const Vec3 X = point_position(e, q);
       if (L.b) {
         const Vec3 b = !rate ? L.b(X, t) : L.b_rate ? L.b_rate(X, t) : central_rate(L.b, X, t);
         for (int a = 0; a < 10; ++a)
@@ -480,7 +491,7 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
   // colour.
   static const int threads = worker_threads();
   const auto n = static_cast<std::ptrdiff_t>(size());
-  const auto num_elements = static_cast<std::ptrdiff_t>(mesh_.tets.size());
+  const auto num_elements = static_cast<std::ptrdiff_t>(elements_.size());
   thread_residuals_.resize(static_cast<std::size_t>(threads));
   std::exception_ptr failure;  // the first of any thread, rethrown after the parallel region
 #pragma omp parallel num_threads(threads)
@@ -491,9 +502,10 @@ void BiphasicProblem::assemble(double t, const double* y, const double* ydot, do
     mine.assign(static_cast<std::size_t>(n), 0.0);
     ElementOutput out;
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t e = 0; e < num_elements; ++e) {
+    for (std::ptrdiff_t i = 0; i < num_elements; ++i) {
       try {
-        element(static_cast<Index>(e), y, ydot, false, out);
+        const Index e = elements_[static_cast<std::size_t>(i)];
+        element(e, y, ydot, false, out);
         const Tet10& tet = mesh_.tets[static_cast<std::size_t>(e)];
         for (int s = 0; s < kElementDofs; ++s) mine[pattern_.global_dof(tet, s)] += out.residual(s);
       } catch (...) {
@@ -559,7 +571,7 @@ BiphasicProblem::FluidRates BiphasicProblem::fluid_rates(double t, const double*
 
 double BiphasicProblem::volume_change(const double* y) const {
   double sum = 0.0;
-  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+  for (const Index e : elements_) {
     Eigen::Matrix<double, 3, 10> u;
     for (int a = 0; a < 10; ++a)
       for (int i = 0; i < 3; ++i) u(i, a) = y[pattern_.u_dof(mesh_.tets[e][a], i)];
@@ -624,10 +636,11 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
 double BiphasicProblem::gls_time_scale() const {
   // min_e c_e / H_A(e), each element with its own material's H_A.
   double time = 0.0;
-  for (std::size_t e = 0; e < gls_c_.size(); ++e) {
-    const double ce = gls_c_[e];
+  if (gls_c_.empty()) return 0.0;
+  for (const Index e : elements_) {
+    const double ce = gls_c_[static_cast<std::size_t>(e)];
     if (!(ce > 0.0)) continue;
-    const double te = ce / laws_of(static_cast<Index>(e)).p_wave_modulus();
+    const double te = ce / laws_of(e).p_wave_modulus();
     if (time == 0.0 || te < time) time = te;
   }
   return time;
@@ -635,14 +648,14 @@ double BiphasicProblem::gls_time_scale() const {
 
 void BiphasicProblem::pressure_schur_term(double cj, double cj_gls,
                                           std::vector<PressureEntry>& out) const {
-  out.reserve(out.size() + 16 * mesh_.tets.size());
-  for (std::size_t e = 0; e < mesh_.tets.size(); ++e) {
+  out.reserve(out.size() + 16 * elements_.size());
+  for (const Index e : elements_) {
     // Each element's own H_A: the div–div stiffness its pressure modes see.
-    const double modulus = laws_of(static_cast<Index>(e)).p_wave_modulus();
+    const double modulus = laws_of(e).p_wave_modulus();
     double volume = 0.0;
-    for (const PointGeometry& g : geometry_[e]) volume += g.weight;
-    const double w = cj / (modulus + cj_gls * gls_coefficient(static_cast<Index>(e)));
-    const Tet10& tet = mesh_.tets[e];
+    for (const PointGeometry& g : geometry_[static_cast<std::size_t>(e)]) volume += g.weight;
+    const double w = cj / (modulus + cj_gls * gls_coefficient(e));
+    const Tet10& tet = mesh_.tets[static_cast<std::size_t>(e)];
     // P1 mass matrix of a tetrahedron: V/20 (1 + δ_ab).
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b)

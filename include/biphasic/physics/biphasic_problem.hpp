@@ -15,6 +15,7 @@
 #include "biphasic/io/config.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/material/material_laws.hpp"
+#include "biphasic/physics/assembly_scope.hpp"
 #include "biphasic/physics/biphasic_element.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
@@ -33,10 +34,12 @@ class BiphasicProblem final : public BiphasicModel {
   /// Resolves boundary conditions by name, builds the geometry cache and the pattern, and
   /// takes the body force and fluid source formulas of config.loads (checked to be finite at
   /// every quadrature point at t = 0 and t = time.t_end). Throws std::runtime_error naming the
-  /// boundary condition or the formula on inconsistent input.
-  BiphasicProblem(const Mesh& mesh, const Config& config);
+  /// boundary condition or the formula on inconsistent input. With a `scope`, the mesh is one
+  /// part's view of a partitioned mesh and the problem assembles that part's share
+  /// (physics/assembly_scope.hpp); rigid platens are then refused.
+  BiphasicProblem(const Mesh& mesh, const Config& config, AssemblyScope scope = {});
   /// The problem keeps a reference to its mesh: a temporary mesh would dangle.
-  BiphasicProblem(Mesh&&, const Config&) = delete;
+  BiphasicProblem(Mesh&&, const Config&, AssemblyScope = {}) = delete;
 
   /// Body force b(X, t) per unit reference volume [N/mm³]: the momentum rows gain
   /// −∫Ω₀ f·b dX, integrated with the element's quadrature rule. `rate` is ∂b/∂t, used by
@@ -196,6 +199,8 @@ class BiphasicProblem final : public BiphasicModel {
   Vec3 point_position(Index e, std::size_t q) const;
 
   const Mesh& mesh_;
+  /// The elements assembled here: all of them, or a part's own (AssemblyScope).
+  std::vector<Index> elements_;
   std::map<std::string, LoadCurve> curves_;
   /// Law sets: [material]'s first, then one per [[region]] entry used by the mesh.
   std::vector<MaterialLaws> laws_;

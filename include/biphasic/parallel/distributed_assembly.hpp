@@ -1,0 +1,84 @@
+// The biphasic system of a mesh split among MPI processes, assembled into PETSc vectors and
+// matrices (docs/parallel.md).
+//
+// Every process holds the whole mesh (mesh 4: 6 MB, against 365 MB for its Jacobian), partitions it
+// the same way (METIS on process 0, broadcast), and builds the problem of its own part
+// (mesh/partition.hpp, physics/assembly_scope.hpp). The unknowns are numbered rank-major: each
+// process owns one contiguous range, displacements interlaced per node. A residual or Jacobian is
+// assembled by each process on its own elements with the one-process element kernels; PETSc adds
+// the parts' contributions (a reverse scatter for the residual, the COO interface for the matrix,
+// whose pattern is set once).
+#pragma once
+
+#include <petscmat.h>
+#include <petscvec.h>
+
+#include <memory>
+#include <vector>
+
+#include "biphasic/assembly/subdomain_dofs.hpp"
+#include "biphasic/io/config.hpp"
+#include "biphasic/mesh/partition.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
+
+namespace biphasic {
+
+class DistributedAssembly {
+ public:
+  /// `mesh` is the whole mesh, the same on every process of `comm` (the object need not outlive
+  /// the assembly). Collective. Throws std::runtime_error naming the process on a failure of
+  /// its part (a bad boundary condition is reported by every process alike).
+  DistributedAssembly(const Mesh& mesh, const Config& config, MPI_Comm comm);
+  ~DistributedAssembly();
+  DistributedAssembly(const DistributedAssembly&) = delete;
+  DistributedAssembly& operator=(const DistributedAssembly&) = delete;
+
+  MPI_Comm comm() const { return comm_; }
+  /// Unknowns of the whole system, and those this process owns (the range starting at
+  /// first_owned()).
+  Index global_size() const { return numbering_.size(); }
+  Index owned_size() const { return static_cast<Index>(dofs_->owned().size()); }
+  Index first_owned() const { return dofs_->first_owned(); }
+  /// The rank-major numbering of the whole mesh's unknowns.
+  const PartitionedNumbering& numbering() const { return numbering_; }
+  const Subdomain& subdomain() const { return sub_; }
+  /// This process's problem on its part of the mesh.
+  BiphasicProblem& local_problem() { return *problem_; }
+  const SubdomainDofs& dofs() const { return *dofs_; }
+
+  /// A new vector with the owned layout (the caller destroys it).
+  Vec new_vector() const;
+  /// A new matrix holding the Jacobian's pattern (AIJ, preallocated; the caller destroys it).
+  Mat new_matrix() const;
+
+  /// F(t, y, ẏ) of the whole system into F. Collective.
+  void residual(double t, Vec y, Vec ydot, Vec F);
+  /// dF/dy + c_j dF/dẏ of the whole system into J (a matrix from new_matrix()). Collective.
+  void jacobian(double t, Vec y, Vec ydot, double cj, Mat J);
+  /// ∂F/∂t of the whole system into dFdt. Collective.
+  void time_derivative(double t, Vec dFdt);
+  /// Sets the constrained entries of y (and of ẏ unless null) to their prescribed values.
+  void apply_dirichlet(double t, Vec y, Vec ydot) const;
+
+  /// The local unknowns' values of a global vector (ghosts included), in the local problem's
+  /// layout. Collective.
+  void to_local(Vec global, std::vector<double>& local);
+
+ private:
+  /// Adds the contributing rows of the local vector local_F_ into F (zeroed first). Collective.
+  void add_from_local(Vec F);
+
+  MPI_Comm comm_;
+  int rank_ = 0;
+  PartitionedNumbering numbering_;
+  Subdomain sub_;
+  std::unique_ptr<BiphasicProblem> problem_;
+  std::unique_ptr<SubdomainDofs> dofs_;
+  VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
+  Vec local_ = nullptr;           ///< sequential work vector in the local layout
+  std::vector<double> y_, ydot_, F_;
+  std::vector<double> values_;           ///< local CSC values
+  std::vector<PetscScalar> coo_values_;  ///< the contributed entries, in COO order
+};
+
+}  // namespace biphasic

@@ -1,0 +1,191 @@
+#include "biphasic/parallel/distributed_assembly.hpp"
+
+#include <petscis.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "biphasic/parallel/collective_failure.hpp"
+#include "biphasic/parallel/petsc_check.hpp"
+#include "biphasic/physics/assembly_scope.hpp"
+
+namespace biphasic {
+
+namespace {
+
+PetscInt petsc_index(Index i) {
+  if (i > std::numeric_limits<PetscInt>::max())
+    throw std::runtime_error("PETSc: unknown " + std::to_string(i) +
+                             " exceeds this PETSc build's 32-bit indices");
+  return static_cast<PetscInt>(i);
+}
+
+/// The partition of process 0, broadcast: every process then works on the same split.
+MeshPartition shared_partition(const Mesh& mesh, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  MeshPartition p;
+  int failed = 0;
+  std::string message;
+  if (rank == 0) {
+    try {
+      p = partition_mesh(mesh, size);
+    } catch (const std::exception& e) {
+      failed = 1;
+      message = e.what();
+    }
+  }
+  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
+  if (failed) {
+    int length = static_cast<int>(message.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+    message.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm);
+    throw std::runtime_error(message);
+  }
+  p.parts = size;
+  p.tet_part.resize(mesh.tets.size());
+  MPI_Bcast(p.tet_part.data(), static_cast<int>(p.tet_part.size()), MPI_INT, 0, comm);
+  p.node_owner.assign(mesh.nodes.size(), size);
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e)
+    for (Index n : mesh.tets[e]) {
+      int& owner = p.node_owner[static_cast<std::size_t>(n)];
+      owner = std::min(owner, p.tet_part[e]);
+    }
+  return p;
+}
+
+}  // namespace
+
+DistributedAssembly::DistributedAssembly(const Mesh& mesh, const Config& config, MPI_Comm comm)
+    : comm_(comm) {
+  MPI_Comm_rank(comm, &rank_);
+  const MeshPartition partition = shared_partition(mesh, comm);
+  numbering_ = number_unknowns(mesh, partition);
+  petsc_index(numbering_.size());
+  run_collectively(comm, [&] {
+    sub_ = extract_subdomain(mesh, partition, rank_);
+    problem_ = std::make_unique<BiphasicProblem>(sub_.mesh, config, subdomain_scope(mesh, sub_));
+    dofs_ = std::make_unique<SubdomainDofs>(sub_, numbering_, problem_->pattern(),
+                                            problem_->constrained());
+  });
+  const auto n = static_cast<std::size_t>(problem_->size());
+  y_.resize(n);
+  ydot_.resize(n);
+  F_.resize(n);
+  values_.resize(static_cast<std::size_t>(problem_->pattern().nnz()));
+  coo_values_.resize(dofs_->entries().size());
+
+  std::vector<PetscInt> global(n);
+  for (std::size_t i = 0; i < n; ++i) global[i] = petsc_index(dofs_->global(static_cast<Index>(i)));
+  IS from = nullptr;
+  petsc_check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(n), global.data(),
+                              PETSC_COPY_VALUES, &from),
+              "ISCreateGeneral");
+  petsc_check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(n), &local_), "VecCreateSeq");
+  Vec layout = new_vector();
+  petsc_check(VecScatterCreate(layout, from, local_, nullptr, &scatter_), "VecScatterCreate");
+  VecDestroy(&layout);
+  ISDestroy(&from);
+}
+
+DistributedAssembly::~DistributedAssembly() {
+  if (scatter_) VecScatterDestroy(&scatter_);
+  if (local_) VecDestroy(&local_);
+}
+
+Vec DistributedAssembly::new_vector() const {
+  Vec v = nullptr;
+  petsc_check(VecCreateMPI(comm_, petsc_index(owned_size()), petsc_index(global_size()), &v),
+              "VecCreateMPI");
+  return v;
+}
+
+Mat DistributedAssembly::new_matrix() const {
+  Mat J = nullptr;
+  const PetscInt m = petsc_index(owned_size()), N = petsc_index(global_size());
+  petsc_check(MatCreate(comm_, &J), "MatCreate");
+  petsc_check(MatSetSizes(J, m, m, N, N), "MatSetSizes");
+  petsc_check(MatSetType(J, MATAIJ), "MatSetType");
+  const auto& entries = dofs_->entries();
+  // PETSc may reorder the index arrays it is given: pass copies.
+  std::vector<PetscInt> rows(entries.size()), cols(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    rows[k] = petsc_index(entries[k].row);
+    cols[k] = petsc_index(entries[k].col);
+  }
+  petsc_check(
+      MatSetPreallocationCOO(J, static_cast<PetscCount>(entries.size()), rows.data(), cols.data()),
+      "MatSetPreallocationCOO");
+  return J;
+}
+
+void DistributedAssembly::to_local(Vec global, std::vector<double>& local) {
+  petsc_check(VecScatterBegin(scatter_, global, local_, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterBegin");
+  petsc_check(VecScatterEnd(scatter_, global, local_, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterEnd");
+  const PetscScalar* a = nullptr;
+  petsc_check(VecGetArrayRead(local_, &a), "VecGetArrayRead");
+  local.assign(a, a + problem_->size());
+  VecRestoreArrayRead(local_, &a);
+}
+
+void DistributedAssembly::add_from_local(Vec F) {
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(local_, &a), "VecGetArray");
+  for (Index i = 0; i < problem_->size(); ++i)
+    a[i] = dofs_->contributes(i) ? F_[static_cast<std::size_t>(i)] : 0.0;
+  VecRestoreArray(local_, &a);
+  petsc_check(VecSet(F, 0.0), "VecSet");
+  petsc_check(VecScatterBegin(scatter_, local_, F, ADD_VALUES, SCATTER_REVERSE), "VecScatterBegin");
+  petsc_check(VecScatterEnd(scatter_, local_, F, ADD_VALUES, SCATTER_REVERSE), "VecScatterEnd");
+}
+
+void DistributedAssembly::residual(double t, Vec y, Vec ydot, Vec F) {
+  to_local(y, y_);
+  to_local(ydot, ydot_);
+  run_collectively(comm_, [&] { problem_->residual(t, y_.data(), ydot_.data(), F_.data()); });
+  add_from_local(F);
+}
+
+void DistributedAssembly::time_derivative(double t, Vec dFdt) {
+  problem_->time_derivative(t, F_.data());
+  add_from_local(dFdt);
+}
+
+void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J) {
+  to_local(y, y_);
+  to_local(ydot, ydot_);
+  run_collectively(comm_,
+                   [&] { problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data()); });
+  const auto& entries = dofs_->entries();
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    coo_values_[k] = values_[static_cast<std::size_t>(entries[k].position)];
+  petsc_check(MatSetValuesCOO(J, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+}
+
+void DistributedAssembly::apply_dirichlet(double t, Vec y, Vec ydot) const {
+  // The prescribed values of the local unknowns, written into the owned ones.
+  std::vector<double> yl(static_cast<std::size_t>(problem_->size()), 0.0), ydl = yl;
+  problem_->apply_dirichlet(t, yl.data(), ydl.data());
+  const std::vector<char>& fixed = problem_->constrained();
+  PetscScalar* a = nullptr;
+  PetscScalar* b = nullptr;
+  petsc_check(VecGetArray(y, &a), "VecGetArray");
+  if (ydot) petsc_check(VecGetArray(ydot, &b), "VecGetArray");
+  const auto& owned = dofs_->owned();
+  for (std::size_t k = 0; k < owned.size(); ++k) {
+    const auto i = static_cast<std::size_t>(owned[k]);
+    if (!fixed[i]) continue;
+    a[k] = yl[i];
+    if (b) b[k] = ydl[i];
+  }
+  VecRestoreArray(y, &a);
+  if (ydot) VecRestoreArray(ydot, &b);
+}
+
+}  // namespace biphasic

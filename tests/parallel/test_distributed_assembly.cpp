@@ -1,0 +1,200 @@
+// The distributed assembly on 1, 2 or 3 MPI processes (ctest label mpi): the residual, ∂F/∂t
+// and Jacobian assembled into PETSc objects, row by row against the one-process problem of the
+// whole mesh (every process computes that independently), the ghost exchange against the
+// whole-mesh state, the Dirichlet values, and a failure on one process reaching all.
+#include <gtest/gtest.h>
+#include <petscsys.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "../common/box_mesh.hpp"
+#include "../common/every_condition.hpp"
+#include "biphasic/parallel/collective_failure.hpp"
+#include "biphasic/parallel/distributed_assembly.hpp"
+
+namespace biphasic {
+namespace {
+
+class DistributedAssemblyTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    mesh_ = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
+    config_ = test::every_condition();
+    whole_ = std::make_unique<BiphasicProblem>(mesh_, config_);
+    dist_ = std::make_unique<DistributedAssembly>(mesh_, config_, PETSC_COMM_WORLD);
+    // Serial unknown of each rank-major unknown.
+    const PartitionedNumbering& num = dist_->numbering();
+    serial_of_.assign(static_cast<std::size_t>(num.size()), -1);
+    for (Index n = 0; n < mesh_.num_nodes(); ++n)
+      for (int c = 0; c < 3; ++c)
+        serial_of_[static_cast<std::size_t>(num.u_base[static_cast<std::size_t>(n)] + c)] =
+            3 * n + c;
+    for (Index v = 0; v < mesh_.num_vertices; ++v)
+      serial_of_[static_cast<std::size_t>(num.p_index[static_cast<std::size_t>(v)])] =
+          3 * mesh_.num_nodes() + v;
+    // The same random state on every process, Dirichlet values set.
+    test::random_state(*whole_, kTime, 3, y_, ydot_);
+    y_vec_ = owned_copy(y_);
+    ydot_vec_ = owned_copy(ydot_);
+  }
+  void TearDown() override {
+    VecDestroy(&y_vec_);
+    VecDestroy(&ydot_vec_);
+  }
+
+  /// A distributed vector holding the owned entries of a serial-layout vector.
+  Vec owned_copy(const std::vector<double>& serial) {
+    Vec v = dist_->new_vector();
+    PetscScalar* a = nullptr;
+    VecGetArray(v, &a);
+    for (Index k = 0; k < dist_->owned_size(); ++k)
+      a[k] = serial[static_cast<std::size_t>(serial_of(dist_->first_owned() + k))];
+    VecRestoreArray(v, &a);
+    return v;
+  }
+  Index serial_of(Index global) const { return serial_of_[static_cast<std::size_t>(global)]; }
+
+  static constexpr double kTime = 1.3;
+  Mesh mesh_;
+  Config config_;
+  std::unique_ptr<BiphasicProblem> whole_;
+  std::unique_ptr<DistributedAssembly> dist_;
+  std::vector<Index> serial_of_;
+  std::vector<double> y_, ydot_;
+  Vec y_vec_ = nullptr, ydot_vec_ = nullptr;
+};
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+TEST_F(DistributedAssemblyTest, GhostExchangeGivesEveryLocalUnknownItsValue) {
+  std::vector<double> local;
+  dist_->to_local(y_vec_, local);
+  const SubdomainDofs& dofs = dist_->dofs();
+  for (Index i = 0; i < dofs.size(); ++i)
+    ASSERT_EQ(local[static_cast<std::size_t>(i)],
+              y_[static_cast<std::size_t>(serial_of(dofs.global(i)))]);
+}
+
+TEST_F(DistributedAssemblyTest, ResidualAndTimeDerivativeMatchTheWholeMesh) {
+  const auto n = static_cast<std::size_t>(whole_->size());
+  std::vector<double> F(n), dFdt(n);
+  whole_->residual(kTime, y_.data(), ydot_.data(), F.data());
+  whole_->time_derivative(kTime, dFdt.data());
+  Vec Fv = dist_->new_vector(), dv = dist_->new_vector();
+  dist_->residual(kTime, y_vec_, ydot_vec_, Fv);
+  dist_->time_derivative(kTime, dv);
+  const PetscScalar* a = nullptr;
+  const PetscScalar* b = nullptr;
+  VecGetArrayRead(Fv, &a);
+  VecGetArrayRead(dv, &b);
+  for (Index k = 0; k < dist_->owned_size(); ++k) {
+    const auto s = static_cast<std::size_t>(serial_of(dist_->first_owned() + k));
+    ASSERT_NEAR(a[k], F[s], 1e-12 * max_abs(F)) << "serial row " << s;
+    ASSERT_NEAR(b[k], dFdt[s], 1e-12 * max_abs(dFdt)) << "serial row " << s;
+  }
+  VecRestoreArrayRead(Fv, &a);
+  VecRestoreArrayRead(dv, &b);
+  VecDestroy(&Fv);
+  VecDestroy(&dv);
+}
+
+TEST_F(DistributedAssemblyTest, JacobianMatchesTheWholeMesh) {
+  const double cj = 2.5;
+  const SparsityPattern& pattern = whole_->pattern();
+  std::vector<double> values(static_cast<std::size_t>(pattern.nnz()));
+  whole_->jacobian(kTime, y_.data(), ydot_.data(), cj, values.data());
+  const double scale = max_abs(values);
+  // Rows of the whole matrix, by serial row: column → value.
+  std::vector<std::map<Index, double>> rows(static_cast<std::size_t>(pattern.size()));
+  for (Index j = 0; j < pattern.size(); ++j)
+    for (Index k = pattern.colptr()[static_cast<std::size_t>(j)];
+         k < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++k)
+      rows[static_cast<std::size_t>(pattern.rowind()[static_cast<std::size_t>(k)])][j] =
+          values[static_cast<std::size_t>(k)];
+  Mat J = dist_->new_matrix();
+  // Twice: the second assembly must replace the first's values, not add to them.
+  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J);
+  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J);
+  for (Index k = 0; k < dist_->owned_size(); ++k) {
+    const auto row = static_cast<PetscInt>(dist_->first_owned() + k);
+    const std::map<Index, double>& expected = rows[static_cast<std::size_t>(serial_of(row))];
+    PetscInt ncols = 0;
+    const PetscInt* cols = nullptr;
+    const PetscScalar* vals = nullptr;
+    MatGetRow(J, row, &ncols, &cols, &vals);
+    std::map<Index, double> got;
+    for (PetscInt c = 0; c < ncols; ++c) got[serial_of(cols[c])] = vals[c];
+    MatRestoreRow(J, row, &ncols, &cols, &vals);
+    for (const auto& [col, v] : expected) {
+      const auto it = got.find(col);
+      ASSERT_NEAR(it == got.end() ? 0.0 : it->second, v, 1e-12 * scale)
+          << "serial entry (" << serial_of(row) << ", " << col << ")";
+    }
+    for (const auto& [col, v] : got)
+      if (!expected.count(col)) {
+        ASSERT_EQ(v, 0.0) << "outside the pattern: " << col;
+      }
+  }
+  MatDestroy(&J);
+}
+
+TEST_F(DistributedAssemblyTest, DirichletValuesMatchTheWholeMesh) {
+  Vec y = dist_->new_vector(), ydot = dist_->new_vector();
+  VecSet(y, 9.0);
+  VecSet(ydot, 9.0);
+  dist_->apply_dirichlet(kTime, y, ydot);
+  const PetscScalar* a = nullptr;
+  VecGetArrayRead(y, &a);
+  for (Index k = 0; k < dist_->owned_size(); ++k) {
+    const auto s = static_cast<std::size_t>(serial_of(dist_->first_owned() + k));
+    EXPECT_EQ(a[k], whole_->constrained()[s] ? y_[s] : 9.0) << "serial unknown " << s;
+  }
+  VecRestoreArrayRead(y, &a);
+  VecDestroy(&y);
+  VecDestroy(&ydot);
+}
+
+TEST(CollectiveFailure, AFailureOnTheLastProcessReachesEveryProcess) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  try {
+    run_collectively(PETSC_COMM_WORLD, [&] {
+      if (rank == size - 1) throw InvertedElement("element 7: det F = -0.1");
+    });
+    FAIL() << "no exception on process " << rank;
+  } catch (const InvertedElement& e) {
+    const std::string expected =
+        (size > 1 ? "process " + std::to_string(size - 1) + ": " : std::string()) +
+        "element 7: det F = -0.1";
+    EXPECT_EQ(std::string(e.what()), expected);
+  }
+  EXPECT_NO_THROW(run_collectively(PETSC_COMM_WORLD, [] {}));
+}
+
+}  // namespace
+}  // namespace biphasic
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 2;
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  // Only process 0 prints; every process's failures count in the exit code.
+  if (rank != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  const int result = RUN_ALL_TESTS();
+  int worst = result;
+  MPI_Allreduce(&result, &worst, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  PetscFinalize();
+  return worst;
+}

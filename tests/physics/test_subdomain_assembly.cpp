@@ -1,0 +1,287 @@
+// The distributed assembly's decomposition, checked in one process: the mesh split into 1–4
+// parts (mesh/partition.hpp), each part's problem assembled on its own view of the mesh
+// (physics/assembly_scope.hpp), and the parts' contributions added by the rules of
+// SubdomainDofs. The sums must be the whole mesh's residual, Jacobian, ∂F/∂t, reactions, fluid
+// rates and volume change, computed independently by the one-process problem, to round-off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "../common/box_mesh.hpp"
+#include "../common/every_condition.hpp"
+#include "biphasic/assembly/subdomain_dofs.hpp"
+#include "biphasic/mesh/partition.hpp"
+#include "biphasic/physics/assembly_scope.hpp"
+#include "biphasic/physics/biphasic_problem.hpp"
+
+namespace biphasic {
+namespace {
+
+Mesh test_mesh() { return test::box_mesh({3, 2, 4}, {1.0, 0.8, 1.2}); }
+
+void add_volume_loads(BiphasicProblem& problem) {
+  problem.set_body_force(
+      [](const Vec3& X, double t) { return Vec3(0.01 * t, -0.02 * X(2), 0.03); });
+  problem.set_fluid_source([](const Vec3& X, double t) { return 1e-3 * (X(0) + t); });
+}
+
+/// Serial-layout unknown ↔ rank-major unknown.
+std::vector<Index> serial_to_partitioned(const Mesh& mesh, const PartitionedNumbering& num) {
+  std::vector<Index> map(static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices));
+  for (Index n = 0; n < mesh.num_nodes(); ++n)
+    for (int c = 0; c < 3; ++c)
+      map[static_cast<std::size_t>(3 * n + c)] = num.u_base[static_cast<std::size_t>(n)] + c;
+  for (Index v = 0; v < mesh.num_vertices; ++v)
+    map[static_cast<std::size_t>(3 * mesh.num_nodes() + v)] =
+        num.p_index[static_cast<std::size_t>(v)];
+  return map;
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+TEST(Partition, CoversEveryElementOnceAndNumbersEveryUnknownOnce) {
+  const Mesh mesh = test_mesh();
+  for (int parts = 1; parts <= 4; ++parts) {
+    SCOPED_TRACE(parts);
+    const MeshPartition p = partition_mesh(mesh, parts);
+    std::vector<int> owned_count(mesh.tets.size(), 0);
+    for (int r = 0; r < parts; ++r) {
+      const Subdomain sub = extract_subdomain(mesh, p, r);
+      EXPECT_NO_THROW(check_mesh(sub.mesh));
+      Index owned = 0;
+      for (std::size_t e = 0; e < sub.global_tet.size(); ++e)
+        if (sub.tet_owned[e]) {
+          ++owned_count[static_cast<std::size_t>(sub.global_tet[e])];
+          ++owned;
+        }
+      EXPECT_GT(owned, 0);
+      // An owned node is touched by an owned element (its owner assembles its rows).
+      for (std::size_t m = 0; m < sub.global_node.size(); ++m)
+        if (sub.node_owned[m]) {
+          EXPECT_TRUE(sub.node_touched[m]) << "node " << sub.global_node[m];
+        }
+    }
+    EXPECT_TRUE(std::all_of(owned_count.begin(), owned_count.end(), [](int c) { return c == 1; }));
+    // The rank-major numbering is a bijection onto [0, N), each part one contiguous range.
+    const PartitionedNumbering num = number_unknowns(mesh, p);
+    const std::vector<Index> map = serial_to_partitioned(mesh, num);
+    EXPECT_EQ(num.size(), static_cast<Index>(map.size()));
+    std::vector<Index> sorted = map;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], static_cast<Index>(i));
+    for (Index n = 0; n < mesh.num_nodes(); ++n) {
+      const auto r = static_cast<std::size_t>(p.node_owner[static_cast<std::size_t>(n)]);
+      EXPECT_GE(num.u_base[static_cast<std::size_t>(n)], num.offset[r]);
+      EXPECT_LT(num.u_base[static_cast<std::size_t>(n)], num.offset[r + 1]);
+    }
+  }
+}
+
+TEST(Partition, RefusesMorePartsThanElements) {
+  const Mesh mesh = test::box_mesh({1, 1, 1}, {1.0, 1.0, 1.0});
+  EXPECT_THROW(partition_mesh(mesh, 7), std::invalid_argument);
+  EXPECT_THROW(partition_mesh(mesh, 0), std::invalid_argument);
+}
+
+/// The whole problem and every part's problem at one random state.
+struct Split {
+  std::vector<Subdomain> subs;
+  std::vector<std::unique_ptr<BiphasicProblem>> problems;
+  std::vector<SubdomainDofs> dofs;
+  std::vector<std::vector<double>> y, ydot;  ///< per part, its local state
+};
+
+class SubdomainAssembly : public ::testing::TestWithParam<int> {
+ protected:
+  void SetUp() override {
+    mesh_ = test_mesh();
+    config_ = test::every_condition();
+    whole_ = std::make_unique<BiphasicProblem>(mesh_, config_);
+    add_volume_loads(*whole_);
+    test::random_state(*whole_, kTime, 11, y_, ydot_);
+
+    const int parts = GetParam();
+    const MeshPartition partition = partition_mesh(mesh_, parts);
+    numbering_ = number_unknowns(mesh_, partition);
+    map_ = serial_to_partitioned(mesh_, numbering_);
+    const std::size_t n = y_.size();
+    std::vector<double> yp(n), ydotp(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      yp[static_cast<std::size_t>(map_[i])] = y_[i];
+      ydotp[static_cast<std::size_t>(map_[i])] = ydot_[i];
+    }
+    split_.subs.reserve(static_cast<std::size_t>(parts));
+    for (int r = 0; r < parts; ++r) {
+      split_.subs.push_back(extract_subdomain(mesh_, partition, r));
+      const Subdomain& sub = split_.subs.back();
+      split_.problems.push_back(
+          std::make_unique<BiphasicProblem>(sub.mesh, config_, subdomain_scope(mesh_, sub)));
+      BiphasicProblem& local = *split_.problems.back();
+      add_volume_loads(local);
+      split_.dofs.emplace_back(sub, numbering_, local.pattern(), local.constrained());
+      const SubdomainDofs& dofs = split_.dofs.back();
+      std::vector<double> yl(static_cast<std::size_t>(local.size())), ydl = yl;
+      for (Index i = 0; i < local.size(); ++i) {
+        yl[static_cast<std::size_t>(i)] = yp[static_cast<std::size_t>(dofs.global(i))];
+        ydl[static_cast<std::size_t>(i)] = ydotp[static_cast<std::size_t>(dofs.global(i))];
+      }
+      split_.y.push_back(std::move(yl));
+      split_.ydot.push_back(std::move(ydl));
+    }
+  }
+
+  /// Adds each part's contributing rows of a local vector (made by `local_vector`) into a vector
+  /// of the whole system, returned in the serial layout.
+  template <class LocalVector>
+  std::vector<double> summed(LocalVector local_vector) {
+    std::vector<double> partitioned(y_.size(), 0.0);
+    for (std::size_t r = 0; r < split_.problems.size(); ++r) {
+      std::vector<double> F(static_cast<std::size_t>(split_.problems[r]->size()));
+      local_vector(r, F);
+      const SubdomainDofs& dofs = split_.dofs[r];
+      for (Index i = 0; i < dofs.size(); ++i)
+        if (dofs.contributes(i))
+          partitioned[static_cast<std::size_t>(dofs.global(i))] += F[static_cast<std::size_t>(i)];
+    }
+    std::vector<double> serial(y_.size());
+    for (std::size_t i = 0; i < y_.size(); ++i)
+      serial[i] = partitioned[static_cast<std::size_t>(map_[i])];
+    return serial;
+  }
+
+  static constexpr double kTime = 1.3;
+  Mesh mesh_;
+  Config config_;
+  std::unique_ptr<BiphasicProblem> whole_;
+  std::vector<double> y_, ydot_;
+  PartitionedNumbering numbering_;
+  std::vector<Index> map_;
+  Split split_;
+};
+
+TEST_P(SubdomainAssembly, ResidualAndTimeDerivativeSumToTheWholeMesh) {
+  std::vector<double> F(y_.size()), dFdt(y_.size());
+  whole_->residual(kTime, y_.data(), ydot_.data(), F.data());
+  whole_->time_derivative(kTime, dFdt.data());
+  const std::vector<double> sum = summed([&](std::size_t r, std::vector<double>& out) {
+    split_.problems[r]->residual(kTime, split_.y[r].data(), split_.ydot[r].data(), out.data());
+  });
+  const std::vector<double> sum_dt = summed([&](std::size_t r, std::vector<double>& out) {
+    split_.problems[r]->time_derivative(kTime, out.data());
+  });
+  const double scale = max_abs(F), scale_dt = max_abs(dFdt);
+  ASSERT_GT(scale, 0.0);
+  ASSERT_GT(scale_dt, 0.0);
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    ASSERT_NEAR(sum[i], F[i], 1e-12 * scale) << "row " << i;
+    ASSERT_NEAR(sum_dt[i], dFdt[i], 1e-12 * scale_dt) << "row " << i;
+  }
+}
+
+TEST_P(SubdomainAssembly, JacobianSumsToTheWholeMesh) {
+  const double cj = 2.5;
+  const SparsityPattern& pattern = whole_->pattern();
+  std::vector<double> values(static_cast<std::size_t>(pattern.nnz())), rates = values;
+  whole_->jacobian(kTime, y_.data(), ydot_.data(), cj, values.data(), rates.data());
+  std::map<std::pair<Index, Index>, std::pair<double, double>> sum;  // partitioned (row, col)
+  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
+    BiphasicProblem& local = *split_.problems[r];
+    std::vector<double> lv(static_cast<std::size_t>(local.pattern().nnz())), lr = lv;
+    local.jacobian(kTime, split_.y[r].data(), split_.ydot[r].data(), cj, lv.data(), lr.data());
+    for (const SubdomainDofs::Entry& e : split_.dofs[r].entries()) {
+      auto& s = sum[{e.row, e.col}];
+      s.first += lv[static_cast<std::size_t>(e.position)];
+      s.second += lr[static_cast<std::size_t>(e.position)];
+    }
+  }
+  const double scale = max_abs(values), scale_rate = max_abs(rates);
+  std::set<std::pair<Index, Index>> seen;
+  for (Index j = 0; j < pattern.size(); ++j)
+    for (Index k = pattern.colptr()[static_cast<std::size_t>(j)];
+         k < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++k) {
+      const Index i = pattern.rowind()[static_cast<std::size_t>(k)];
+      const std::pair<Index, Index> key{map_[static_cast<std::size_t>(i)],
+                                        map_[static_cast<std::size_t>(j)]};
+      const auto it = sum.find(key);
+      const double v = it == sum.end() ? 0.0 : it->second.first;
+      const double w = it == sum.end() ? 0.0 : it->second.second;
+      ASSERT_NEAR(v, values[static_cast<std::size_t>(k)], 1e-12 * scale) << i << ", " << j;
+      ASSERT_NEAR(w, rates[static_cast<std::size_t>(k)], 1e-12 * scale_rate) << i << ", " << j;
+      seen.insert(key);
+    }
+  // Entries outside the whole mesh's pattern are zero.
+  for (const auto& [key, v] : sum)
+    if (!seen.count(key)) {
+      EXPECT_EQ(v.first, 0.0) << key.first << ", " << key.second;
+    }
+}
+
+TEST_P(SubdomainAssembly, ReactionsFluidRatesAndVolumeChangeSumToTheWholeMesh) {
+  const std::vector<std::string> names{"z0", "z1", "x0"};
+  const auto reactions = whole_->reactions(names, kTime, y_.data(), ydot_.data());
+  const FluidRates rates = whole_->fluid_rates(kTime, y_.data(), ydot_.data());
+  const double volume = whole_->volume_change(y_.data());
+  std::vector<std::array<double, 3>> reaction_sum(reactions.size(), {0.0, 0.0, 0.0});
+  FluidRates rate_sum;
+  double volume_sum = 0.0, gls_time = 0.0;
+  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
+    BiphasicProblem& local = *split_.problems[r];
+    const auto part = local.reactions(names, kTime, split_.y[r].data(), split_.ydot[r].data());
+    for (std::size_t b = 0; b < part.size(); ++b)
+      for (int c = 0; c < 3; ++c) reaction_sum[b][c] += part[b][c];
+    const FluidRates f = local.fluid_rates(kTime, split_.y[r].data(), split_.ydot[r].data());
+    rate_sum.drained += f.drained;
+    rate_sum.prescribed += f.prescribed;
+    rate_sum.source += f.source;
+    volume_sum += local.volume_change(split_.y[r].data());
+    const double t = local.gls_time_scale();
+    gls_time = r == 0 ? t : std::min(gls_time, t);
+  }
+  for (std::size_t b = 0; b < reactions.size(); ++b)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(reaction_sum[b][c], reactions[b][c], 1e-12 * (1.0 + std::abs(reactions[b][c])))
+          << names.size() << " " << b << " " << c;
+  EXPECT_NEAR(rate_sum.drained, rates.drained, 1e-14 + 1e-12 * std::abs(rates.drained));
+  EXPECT_NEAR(rate_sum.prescribed, rates.prescribed, 1e-14 + 1e-12 * std::abs(rates.prescribed));
+  EXPECT_NEAR(rate_sum.source, rates.source, 1e-14 + 1e-12 * std::abs(rates.source));
+  EXPECT_NE(rates.prescribed, 0.0);
+  EXPECT_NE(rates.source, 0.0);
+  EXPECT_NEAR(volume_sum, volume, 1e-14 + 1e-12 * std::abs(volume));
+  EXPECT_DOUBLE_EQ(gls_time, whole_->gls_time_scale());
+}
+
+TEST_P(SubdomainAssembly, EveryPartSetsItsDirichletUnknownsAsTheWholeMeshDoes) {
+  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
+    BiphasicProblem& local = *split_.problems[r];
+    std::vector<double> y(static_cast<std::size_t>(local.size()), 7.0), ydot = y;
+    local.apply_dirichlet(kTime, y.data(), ydot.data());
+    const SubdomainDofs& dofs = split_.dofs[r];
+    EXPECT_EQ(local.solution_scales(), whole_->solution_scales());
+    EXPECT_EQ(local.stiffness_scale(), whole_->stiffness_scale());
+    EXPECT_EQ(local.conductance_scale(), whole_->conductance_scale());
+    for (Index i : dofs.owned()) {
+      // The serial unknown of this owned unknown.
+      const auto serial = static_cast<std::size_t>(
+          std::find(map_.begin(), map_.end(), dofs.global(i)) - map_.begin());
+      ASSERT_EQ(local.constrained()[static_cast<std::size_t>(i)], whole_->constrained()[serial]);
+      if (whole_->constrained()[serial]) {
+        EXPECT_EQ(y[static_cast<std::size_t>(i)], y_[serial]);
+        EXPECT_EQ(ydot[static_cast<std::size_t>(i)], ydot_[serial]);
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, SubdomainAssembly, ::testing::Values(1, 2, 3, 4));
+
+}  // namespace
+}  // namespace biphasic
