@@ -3,9 +3,7 @@
 #include "biphasic/time/solver_messages.hpp"
 
 #include <kinsol/kinsol.h>
-#include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
 #include <cmath>
@@ -113,11 +111,9 @@ struct BackwardEuler::Impl {
   static int jacobian_fn(N_Vector yv, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
     return guarded_callback(self->failure, [&] {
-      self->problem.pattern().restore_into(J);
       const double* y = N_VGetArrayPointer(yv);
       self->rate(y);
-      self->problem.jacobian(self->t, y, self->ydot.data(), 1.0 / self->dt,
-                             SUNSparseMatrix_Data(J));
+      self->problem.jacobian_into(self->t, y, self->ydot.data(), 1.0 / self->dt, J);
       self->jac_t = self->t;
       self->jac_dt = self->dt;
       self->jac_y.assign(y, y + self->problem.size());
@@ -148,17 +144,19 @@ BackwardEuler::BackwardEuler(SemidiscreteSystem& problem, const TimeConfig& time
   Impl& m = *impl_;
   if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
   const Index n = problem.size();
-  const SparsityPattern& pat = problem.pattern();
-  m.y = N_VNew_Serial(n, m.ctx);
-  m.uscale = N_VNew_Serial(n, m.ctx);
-  m.fscale = N_VNew_Serial(n, m.ctx);
+  m.y = problem.new_vector(m.ctx);
+  m.uscale = problem.new_vector(m.ctx);
+  m.fscale = problem.new_vector(m.ctx);
   N_VConst(1.0, m.uscale);
-  m.A = pat.new_matrix(m.ctx);
-  const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
-    return std::pair{1.0 / m.dt, 1.0 / m.dt};
-  });
-  m.ls =
-      make_linear_solver(linear_solver, m.ctx, &ls_stats_, fill_order(linear_solver, pat), &saddle);
+  m.A = problem.new_jacobian_matrix(m.ctx);
+  if (linear_solver.type == LinearSolverType::Iterative) {
+    const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
+      return std::pair{1.0 / m.dt, 1.0 / m.dt};
+    });
+    m.ls = problem.new_linear_solver(linear_solver, m.ctx, &ls_stats_, &saddle);
+  } else {
+    m.ls = problem.new_linear_solver(linear_solver, m.ctx, &ls_stats_, nullptr);
+  }
   m.y_old.assign(n, 0.0);
   m.ydot.assign(n, 0.0);
   m.last_residual.assign(n, 0.0);

@@ -43,10 +43,13 @@ class SemidiscreteSystem {
   virtual ~SemidiscreteSystem() = default;
 
   // ---- unknowns and pattern ----------------------------------------------------------------
-  /// The Jacobian's fixed CSC pattern (also the number of unknowns).
+  /// The Jacobian's fixed CSC pattern (also the number of unknowns). A system distributed over
+  /// processes has none (its matrix is PETSc's) and throws std::logic_error.
   virtual const SparsityPattern& pattern() const = 0;
-  Index size() const { return pattern().size(); }
-  Index num_u() const { return pattern().num_u(); }
+  /// Unknowns of this process: all of them in one process, the owned range under MPI (whose
+  /// displacements again come first).
+  virtual Index size() const { return pattern().size(); }
+  virtual Index num_u() const { return pattern().num_u(); }
   /// Unknowns fixed by Dirichlet conditions (1 = fixed), size().
   virtual const std::vector<char>& constrained() const = 0;
 
@@ -69,6 +72,21 @@ class SemidiscreteSystem {
   virtual void set_conservative_volume_rate(double dt) = 0;
   /// Evaluation counters and timings (the integrators read the Jacobian count per step).
   virtual AssemblyStats& stats() = 0;
+
+  // ---- linear algebra of the integrators (defaults: one process, the CSC pattern) ----------
+  /// A new SUNDIALS vector of size() entries (serial; parallel under MPI). Caller destroys.
+  virtual N_Vector new_vector(SUNContext ctx) const;
+  /// A new matrix for dF/dy + c_j dF/dẏ (a SUNSparseMatrix of the pattern). Caller destroys.
+  virtual SUNMatrix new_jacobian_matrix(SUNContext ctx) const;
+  /// dF/dy + c_j dF/dẏ into J (from new_jacobian_matrix()); dF/dẏ into `rate_values` if given
+  /// (the pattern's value layout: one process only).
+  virtual void jacobian_into(double t, const double* y, const double* ydot, double cj, SUNMatrix J,
+                             double* rate_values = nullptr);
+  /// The linear solver `config` names, for matrices from new_jacobian_matrix(); `saddle` is
+  /// what the iterative solver needs (the direct ones ignore it). `stats` must outlive it.
+  virtual LinearSolverPtr new_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
+                                            LinearSolverStats* stats,
+                                            const SaddlePointStructure* saddle) const;
 
   // ---- scales for tolerances and messages ----------------------------------------------------
   /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].

@@ -1,0 +1,71 @@
+// The semidiscrete system of a mesh split among MPI processes, as the time integrators see it
+// (time/semidiscrete_system.hpp): each process holds the owned range of y, ẏ and F, in the
+// rank-major numbering (displacements of its nodes first, then its pressures), as the local
+// array of an N_Vector_Parallel; the Jacobian is a PETSc matrix solved through a PETSc KSP
+// (docs/parallel.md). Norms and scales are those of the whole system on every process, so every
+// process takes the same decisions (cut-backs, step sizes).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "biphasic/parallel/distributed_assembly.hpp"
+#include "biphasic/time/semidiscrete_system.hpp"
+
+namespace biphasic {
+
+class DistributedSystem final : public SemidiscreteSystem {
+ public:
+  /// `assembly` must outlive the system.
+  explicit DistributedSystem(DistributedAssembly& assembly);
+  ~DistributedSystem() override;
+
+  /// Throws std::logic_error: a distributed system has no one-process pattern.
+  const SparsityPattern& pattern() const override;
+  Index size() const override { return assembly_.owned_size(); }
+  Index num_u() const override { return num_u_; }
+  const std::vector<char>& constrained() const override { return constrained_; }
+
+  void residual(double t, const double* y, const double* ydot, double* F) override;
+  /// Throws std::logic_error: the Jacobian goes into a PETSc matrix (jacobian_into()).
+  void jacobian(double t, const double* y, const double* ydot, double cj, double* values,
+                double* rate_values = nullptr) override;
+  void time_derivative(double t, double* dFdt) const override;
+  void apply_dirichlet(double t, double* y, double* ydot) const override;
+  std::vector<double> breakpoints() const override;
+  void set_conservative_volume_rate(double dt) override;
+  AssemblyStats& stats() override;
+
+  N_Vector new_vector(SUNContext ctx) const override;
+  SUNMatrix new_jacobian_matrix(SUNContext ctx) const override;
+  /// dF/dy + c_j dF/dẏ into the PETSc matrix of J; `rate_values` must be null (the
+  /// shift-corrected solver is a one-process method).
+  void jacobian_into(double t, const double* y, const double* ydot, double cj, SUNMatrix J,
+                     double* rate_values = nullptr) override;
+  /// linear_solver.type = "mumps": the parallel MUMPS through PETSc (make_petsc_direct_solver);
+  /// other types throw std::invalid_argument naming the key.
+  LinearSolverPtr new_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
+                                    LinearSolverStats* stats,
+                                    const SaddlePointStructure* saddle) const override;
+
+  /// Over the free owned rows of every process.
+  std::pair<double, double> field_norms(const double* F) const override;
+  std::pair<double, double> solution_scales() const override;
+  double stiffness_scale() const override;
+  double conductance_scale() const override;
+  bool has_gls() const override;
+  bool has_flux_perturbation() const override;
+  /// The smallest over the processes.
+  double gls_time_scale() const override;
+  /// Throws std::runtime_error: the block preconditioner is not yet distributed.
+  SaddlePointStructure saddle_point_structure(
+      std::function<std::pair<double, double>()> shifts) const override;
+
+ private:
+  DistributedAssembly& assembly_;
+  Index num_u_ = 0;
+  std::vector<char> constrained_;
+  Vec y_ = nullptr, ydot_ = nullptr, F_ = nullptr;  ///< storage-less, over caller arrays
+};
+
+}  // namespace biphasic

@@ -1,0 +1,157 @@
+#include "biphasic/parallel/distributed_system.hpp"
+
+#include <nvector/nvector_parallel.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "biphasic/parallel/petsc_check.hpp"
+#include "biphasic/parallel/petsc_linear_solver.hpp"
+
+namespace biphasic {
+
+namespace {
+
+/// A PETSc vector shown a caller's array for one scope (VecPlaceArray / VecResetArray).
+class Placed {
+ public:
+  Placed(Vec v, const double* a) : v_(v) {
+    petsc_check(VecPlaceArray(v_, const_cast<double*>(a)), "VecPlaceArray");
+  }
+  ~Placed() { VecResetArray(v_); }
+  Placed(const Placed&) = delete;
+  Placed& operator=(const Placed&) = delete;
+  operator Vec() const { return v_; }
+
+ private:
+  Vec v_;
+};
+
+}  // namespace
+
+DistributedSystem::DistributedSystem(DistributedAssembly& assembly) : assembly_(assembly) {
+  int rank = 0;
+  MPI_Comm_rank(assembly.comm(), &rank);
+  num_u_ = 3 * assembly.numbering().owned_nodes[static_cast<std::size_t>(rank)];
+  const std::vector<char>& local = assembly.local_problem().constrained();
+  for (Index i : assembly.dofs().owned())
+    constrained_.push_back(local[static_cast<std::size_t>(i)]);
+  for (Vec* v : {&y_, &ydot_, &F_})
+    petsc_check(VecCreateMPIWithArray(assembly.comm(), 1, static_cast<PetscInt>(size()),
+                                      static_cast<PetscInt>(assembly.global_size()), nullptr, v),
+                "VecCreateMPIWithArray");
+}
+
+DistributedSystem::~DistributedSystem() {
+  for (Vec* v : {&y_, &ydot_, &F_})
+    if (*v) VecDestroy(v);
+}
+
+const SparsityPattern& DistributedSystem::pattern() const {
+  throw std::logic_error("a distributed system has no one-process sparsity pattern");
+}
+
+void DistributedSystem::residual(double t, const double* y, const double* ydot, double* F) {
+  Placed yv(y_, y), ydv(ydot_, ydot), Fv(F_, F);
+  assembly_.residual(t, yv, ydv, Fv);
+}
+
+void DistributedSystem::jacobian(double, const double*, const double*, double, double*, double*) {
+  throw std::logic_error("a distributed system assembles its Jacobian with jacobian_into()");
+}
+
+void DistributedSystem::jacobian_into(double t, const double* y, const double* ydot, double cj,
+                                      SUNMatrix J, double* rate_values) {
+  if (rate_values)
+    throw std::invalid_argument(
+        "time.bdf.shift_correction needs the one-process matrix layout; set it to false under MPI");
+  Placed yv(y_, y), ydv(ydot_, ydot);
+  assembly_.jacobian(t, yv, ydv, cj, petsc_matrix(J));
+}
+
+void DistributedSystem::time_derivative(double t, double* dFdt) const {
+  Placed Fv(F_, dFdt);
+  assembly_.time_derivative(t, Fv);
+}
+
+void DistributedSystem::apply_dirichlet(double t, double* y, double* ydot) const {
+  Placed yv(y_, y);
+  if (!ydot) {
+    assembly_.apply_dirichlet(t, yv, nullptr);
+    return;
+  }
+  Placed ydv(ydot_, ydot);
+  assembly_.apply_dirichlet(t, yv, ydv);
+}
+
+std::vector<double> DistributedSystem::breakpoints() const {
+  return assembly_.local_problem().breakpoints();
+}
+
+void DistributedSystem::set_conservative_volume_rate(double dt) {
+  assembly_.local_problem().set_conservative_volume_rate(dt);
+}
+
+AssemblyStats& DistributedSystem::stats() { return assembly_.local_problem().stats(); }
+
+N_Vector DistributedSystem::new_vector(SUNContext ctx) const {
+  return N_VNew_Parallel(assembly_.comm(), size(), assembly_.global_size(), ctx);
+}
+
+SUNMatrix DistributedSystem::new_jacobian_matrix(SUNContext ctx) const {
+  return wrap_petsc_matrix(assembly_.new_matrix(), ctx);
+}
+
+LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& config,
+                                                     SUNContext ctx, LinearSolverStats* stats,
+                                                     const SaddlePointStructure*) const {
+  if (config.type != LinearSolverType::Mumps)
+    throw std::invalid_argument(
+        "linear_solver.type: only \"mumps\" (the parallel MUMPS through PETSc) runs on several "
+        "processes so far");
+  return make_petsc_direct_solver(assembly_.comm(), ctx, stats);
+}
+
+std::pair<double, double> DistributedSystem::field_norms(const double* F) const {
+  double local[2] = {0.0, 0.0};
+  for (Index i = 0; i < size(); ++i) {
+    if (constrained_[static_cast<std::size_t>(i)]) continue;
+    double& r = i < num_u_ ? local[0] : local[1];
+    r = std::max(r, std::abs(F[i]));
+  }
+  double global[2] = {0.0, 0.0};
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, assembly_.comm());
+  return {global[0], global[1]};
+}
+
+std::pair<double, double> DistributedSystem::solution_scales() const {
+  return assembly_.local_problem().solution_scales();
+}
+double DistributedSystem::stiffness_scale() const {
+  return assembly_.local_problem().stiffness_scale();
+}
+double DistributedSystem::conductance_scale() const {
+  return assembly_.local_problem().conductance_scale();
+}
+bool DistributedSystem::has_gls() const { return assembly_.local_problem().has_gls(); }
+bool DistributedSystem::has_flux_perturbation() const {
+  return assembly_.local_problem().has_flux_perturbation();
+}
+
+double DistributedSystem::gls_time_scale() const {
+  // The smallest positive value over the processes (0: no process has the term).
+  const double mine = assembly_.local_problem().gls_time_scale();
+  double smallest = 0.0;
+  const double candidate = mine > 0.0 ? mine : 1e300;
+  MPI_Allreduce(&candidate, &smallest, 1, MPI_DOUBLE, MPI_MIN, assembly_.comm());
+  return smallest == 1e300 ? 0.0 : smallest;
+}
+
+SaddlePointStructure DistributedSystem::saddle_point_structure(
+    std::function<std::pair<double, double>()>) const {
+  throw std::runtime_error(
+      "linear_solver.type = \"iterative\": its block preconditioner does not run on several "
+      "processes yet");
+}
+
+}  // namespace biphasic

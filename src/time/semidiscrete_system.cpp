@@ -1,0 +1,27 @@
+#include "biphasic/time/semidiscrete_system.hpp"
+
+#include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+namespace biphasic {
+
+N_Vector SemidiscreteSystem::new_vector(SUNContext ctx) const { return N_VNew_Serial(size(), ctx); }
+
+SUNMatrix SemidiscreteSystem::new_jacobian_matrix(SUNContext ctx) const {
+  return pattern().new_matrix(ctx);
+}
+
+void SemidiscreteSystem::jacobian_into(double t, const double* y, const double* ydot, double cj,
+                                       SUNMatrix J, double* rate_values) {
+  // KINSOL and IDA zero the index arrays with the values before every Jacobian call.
+  pattern().restore_into(J);
+  jacobian(t, y, ydot, cj, SUNSparseMatrix_Data(J), rate_values);
+}
+
+LinearSolverPtr SemidiscreteSystem::new_linear_solver(const LinearSolverConfig& config,
+                                                      SUNContext ctx, LinearSolverStats* stats,
+                                                      const SaddlePointStructure* saddle) const {
+  return make_linear_solver(config, ctx, stats, fill_order(config, pattern()), saddle);
+}
+
+}  // namespace biphasic
