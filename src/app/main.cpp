@@ -1,5 +1,9 @@
 // Command-line front end: biphasic run|check CASE [-o DIR] [--set key=value ...], biphasic
 // schema, biphasic help [COMMAND], and COMMAND --help (command_help.hpp).
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +14,7 @@
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/app/run.hpp"
+#include "biphasic/app/run_arguments.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
@@ -28,37 +33,12 @@ bool asks_for_help(const std::vector<std::string>& args) {
 
 /// `run`, or `check` (validate == true): reads and validates the case, then runs it or stops.
 int run_command(const std::vector<std::string>& args, bool validate_only) {
-  std::string case_path, out_dir, restart_dir;
-  std::vector<std::string> overrides;
-  biphasic::RunOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* flag) {
-      if (i + 1 >= args.size()) throw std::invalid_argument(std::string(flag) + " needs a value");
-      return args[++i];
-    };
-    if (a == "-o" || a == "--output") {
-      out_dir = value("-o");
-    } else if (a == "--set") {
-      overrides.push_back(value("--set"));
-    } else if (a.rfind("--set=", 0) == 0) {
-      overrides.push_back(a.substr(6));
-    } else if (a == "--restart") {
-      restart_dir = value("--restart");
-    } else if (a == "--overwrite") {
-      options.overwrite = true;
-    } else if (a == "--quiet" || a == "-q") {
-      options.quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      throw std::invalid_argument("unknown option '" + a + "'");
-    } else if (case_path.empty()) {
-      case_path = a;
-    } else {
-      throw std::invalid_argument("more than one case file given ('" + case_path + "', '" + a +
-                                  "')");
-    }
-  }
-  if (case_path.empty()) throw std::invalid_argument("run needs a case file");
+  biphasic::RunArguments parsed = biphasic::parse_run_arguments(args);
+  const std::string& case_path = parsed.case_path;
+  std::string& out_dir = parsed.output_dir;
+  const std::string& restart_dir = parsed.restart_dir;
+  const std::vector<std::string>& overrides = parsed.overrides;
+  biphasic::RunOptions& options = parsed.options;
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   biphasic::check_size(config, case_path, biphasic::available_memory());
   if (validate_only) {
@@ -88,8 +68,34 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
 
 }  // namespace
 
+/// Processes mpirun started: Open MPI sets OMPI_COMM_WORLD_SIZE, MPICH and Intel MPI PMI_SIZE.
+int mpi_world_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* v = std::getenv(name)) return std::atoi(v);
+  return 1;
+}
+
+/// `run` under mpirun with more than one process: the MPI program takes over this process
+/// (docs/parallel.md); it lies next to this one, else where the build put it. Returns only if
+/// it could not be started.
+void hand_over_to_mpi_program(char** argv) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  std::string program = ec ? std::string() : (self.parent_path() / "biphasic_mpi").string();
+  if (program.empty() || !std::filesystem::exists(program)) program = BIPHASIC_MPI_PROGRAM;
+  argv[0] = program.data();
+  execv(program.c_str(), argv);
+  std::cerr << "error: biphasic was started by mpirun with " << mpi_world_size()
+            << " processes, but the MPI program " << program << " could not be started ("
+            << std::strerror(errno) << ")\n";
+}
+
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && args[0] == "run" && mpi_world_size() > 1) {
+    hand_over_to_mpi_program(argv);
+    return 2;
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h") {
     std::cout << biphasic::program_usage();
     return args.empty() ? 1 : 0;

@@ -229,12 +229,18 @@ std::vector<std::string> check_section_probes(const Config& config, const Sectio
 
 ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, const SemidiscreteSystem& problem,
                              const std::string& output_dir, std::optional<double> resume_t)
+    : ProbeRecorder(std::move(probes), problem.constrained(), problem.pattern().p_dof(0),
+                    output_dir, resume_t) {}
+
+ProbeRecorder::ProbeRecorder(std::vector<Probe> probes, const std::vector<char>& constrained,
+                             Index first_pressure, const std::string& output_dir,
+                             std::optional<double> resume_t)
     : probes_(std::move(probes)) {
   for (const Probe& probe : probes_) {
     const std::string path = (std::filesystem::path(output_dir) / probe.file).string();
     if (resume_t) keep_csv_rows_until(path, *resume_t);
     writers_.push_back(std::make_unique<LineCsvWriter>(path, resume_t.has_value()));
-    if (probe.measured) drained_ = drained_ends(probe.samples, problem);
+    if (probe.measured) drained_ = drained_ends(probe.samples, constrained, first_pressure);
   }
 }
 

@@ -597,6 +597,15 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
 
 }  // namespace
 
+void start_summary(nlohmann::json& summary, const Config& config, const RunOptions& options) {
+  summary["status"] = "running";
+  summary["case_file"] = config.case_file;
+  summary["overrides"] = options.overrides;
+  summary["version"] = BIPHASIC_VERSION;
+  summary["dependencies"] = dependency_versions();
+  summary["configuration"] = config_to_json(config);
+}
+
 nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const auto wall0 = Clock::now();
   if (options.restart && !fs::is_directory(options.output_dir))
@@ -616,12 +625,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     summary["restarts"].push_back(
         {{"t", resume->t}, {"step", resume->step}, {"overrides", options.overrides}});
   }
-  summary["status"] = "running";
-  summary["case_file"] = config.case_file;
-  summary["overrides"] = options.overrides;
-  summary["version"] = BIPHASIC_VERSION;
-  summary["dependencies"] = dependency_versions();
-  summary["configuration"] = config_to_json(config);
+  start_summary(summary, config, options);
   summary.erase("error");
   if (!resume) write_json_atomically(summary_path, summary);
 

@@ -13,11 +13,14 @@ void run_collectively(MPI_Comm comm, const std::function<void()>& work) {
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   std::string message;
-  int kind = 0;  // 0 none, 1 recoverable (InvertedElement), 2 other
+  int kind = 0;  // 0 none, 1 recoverable (InvertedElement), 2 other, 3 bad input
   try {
     work();
   } catch (const InvertedElement& e) {
     kind = 1;
+    message = e.what();
+  } catch (const std::invalid_argument& e) {
+    kind = 3;
     message = e.what();
   } catch (const std::exception& e) {
     kind = 2;
@@ -37,6 +40,7 @@ void run_collectively(MPI_Comm comm, const std::function<void()>& work) {
   MPI_Bcast(message.data(), header[1], MPI_CHAR, speaker, comm);
   if (size > 1) message = "process " + std::to_string(speaker) + ": " + message;
   if (header[0] == 1) throw InvertedElement(message);
+  if (header[0] == 3) throw std::invalid_argument(message);
   throw std::runtime_error(message);
 }
 

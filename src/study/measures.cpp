@@ -61,13 +61,18 @@ LineMeasures line_measures(const std::vector<double>& s, const std::vector<doubl
 }
 
 DrainedEnds drained_ends(const LineProbe& probe, const SemidiscreteSystem& problem) {
+  return drained_ends(probe, problem.constrained(), problem.pattern().p_dof(0));
+}
+
+DrainedEnds drained_ends(const LineProbe& probe, const std::vector<char>& constrained,
+                         Index first_pressure) {
   // Weights below this are round-off (a point on an element face has the opposite vertex's
   // weight ~1e-16, not 0).
   constexpr double kNegligible = 1e-9;
   auto drained = [&](std::size_t i) {
     for (const auto& [vertex, weight] : probe.sample(i).p_weights) {
       if (std::abs(weight) > kNegligible &&
-          !problem.constrained()[static_cast<std::size_t>(problem.pattern().p_dof(vertex))])
+          !constrained[static_cast<std::size_t>(first_pressure + vertex)])
         return false;
     }
     return true;

@@ -177,6 +177,12 @@ TEST(CollectiveFailure, AFailureOnTheLastProcessReachesEveryProcess) {
     EXPECT_EQ(std::string(e.what()), expected);
   }
   EXPECT_NO_THROW(run_collectively(PETSC_COMM_WORLD, [] {}));
+  // Bad input stays bad input (exit status 1), whichever process found it.
+  EXPECT_THROW(run_collectively(PETSC_COMM_WORLD,
+                                [&] {
+                                  if (rank == 0) throw std::invalid_argument("key = value");
+                                }),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -79,6 +79,12 @@ class ProbeRecorder {
   /// them.
   ProbeRecorder(std::vector<Probe> probes, const SemidiscreteSystem& problem,
                 const std::string& output_dir, std::optional<double> resume_t = std::nullopt);
+  /// The same with the drained ends from the Dirichlet flags of the one-process layout
+  /// (`constrained`, pressures from `first_pressure` on, one per vertex): a distributed run
+  /// gathers them on its first process.
+  ProbeRecorder(std::vector<Probe> probes, const std::vector<char>& constrained,
+                Index first_pressure, const std::string& output_dir,
+                std::optional<double> resume_t = std::nullopt);
   ~ProbeRecorder();
 
   /// The summary's "line" block (start, end, sampling, samples, drained ends; or that there is

@@ -53,4 +53,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options);
 /// Library versions linked into the build (SUNDIALS, SuiteSparse, gmsh, HDF5, Eigen, …).
 std::string dependency_versions();
 
+/// The summary's first entries: status "running", case file, overrides, version, dependency
+/// versions and the configuration as read.
+void start_summary(nlohmann::json& summary, const Config& config, const RunOptions& options);
+
 }  // namespace biphasic

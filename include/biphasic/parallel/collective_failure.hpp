@@ -11,8 +11,8 @@ namespace biphasic {
 
 /// Runs `work` on this process; collective over `comm`. If `work` threw on any process, every
 /// process throws: InvertedElement if that rank's exception was one (a recoverable state for
-/// the integrators), else std::runtime_error; the message is prefixed with "process <rank>: "
-/// when the communicator has more than one process.
+/// the integrators), std::invalid_argument if it was one (bad input), else std::runtime_error; the
+/// message is prefixed with "process <rank>: " when the communicator has more than one process.
 void run_collectively(MPI_Comm comm, const std::function<void()>& work);
 
 }  // namespace biphasic

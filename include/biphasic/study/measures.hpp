@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "biphasic/mesh/mesh.hpp"
+
 namespace biphasic {
 
 class LineProbe;
@@ -67,5 +69,9 @@ double excess_variation(const std::vector<double>& p, int turning_points);
 /// (Dirichlet pressure rows) only: a vertex with a prescribed pressure, an edge node between
 /// two such vertices, or a point on a face (or edge, in a section) of them.
 DrainedEnds drained_ends(const LineProbe& probe, const SemidiscreteSystem& problem);
+/// The same from the Dirichlet flags of the unknowns (`constrained`, the pressure of vertex v at
+/// first_pressure + v).
+DrainedEnds drained_ends(const LineProbe& probe, const std::vector<char>& constrained,
+                         Index first_pressure);
 
 }  // namespace biphasic

@@ -1,0 +1,365 @@
+#include "biphasic/parallel/distributed_run.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "biphasic/app/field_output.hpp"
+#include "biphasic/app/probes.hpp"
+#include "biphasic/io/case_file.hpp"
+#include "biphasic/io/field_writer.hpp"
+#include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/reaction_csv.hpp"
+#include "biphasic/parallel/collective_failure.hpp"
+#include "biphasic/parallel/distributed_system.hpp"
+#include "biphasic/parallel/mesh_broadcast.hpp"
+#include "biphasic/parallel/petsc_check.hpp"
+#include "biphasic/time/backward_euler.hpp"
+
+namespace biphasic {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+void write_json(const fs::path& path, const nlohmann::json& j) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << '\n';
+    out.flush();
+    if (!out) throw std::runtime_error("could not write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+/// Refuses, before any work, what does not run on several processes yet.
+void check_supported(const Config& config, const RunOptions& options) {
+  if (is_two_dimensional(config.model))
+    throw std::invalid_argument("model = \"" + to_string(config.model) +
+                                "\": the two-dimensional models run on one process only");
+  if (config.time.integrator != Integrator::BackwardEuler)
+    throw std::invalid_argument(
+        "time.integrator: only \"backward_euler\" runs on several processes so far");
+  if (config.linear_solver.type != LinearSolverType::Mumps)
+    throw std::invalid_argument(
+        "linear_solver.type: only \"mumps\" (the parallel MUMPS through PETSc) runs on several "
+        "processes so far");
+  for (FieldQuantity q : config.output.fields)
+    if (q != FieldQuantity::Displacement && q != FieldQuantity::Pressure)
+      throw std::invalid_argument("output.fields: \"" + to_string(q) +
+                                  "\" is not written by a run on several processes yet "
+                                  "(displacement and pressure are)");
+  if (options.restart)
+    throw std::invalid_argument("--restart: a run on several processes cannot be continued yet");
+}
+
+/// Peak resident memory of this process [GB].
+double peak_memory_gb() {
+  rusage r{};
+  getrusage(RUSAGE_SELF, &r);
+  return static_cast<double>(r.ru_maxrss) / (1024.0 * 1024.0);
+}
+
+/// Every process's value, on process 0 (elsewhere empty).
+std::vector<double> gather(double x, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  std::vector<double> all(rank == 0 ? static_cast<std::size_t>(size) : 0);
+  MPI_Gather(&x, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, comm);
+  return all;
+}
+
+}  // namespace
+
+nlohmann::json run_distributed(const Config& config, const RunOptions& options, MPI_Comm comm) {
+  const auto wall0 = Clock::now();
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  check_supported(config, options);
+  const bool root = rank == 0;
+  auto say = [&](const std::string& line) {
+    if (root && !options.quiet) std::cout << line << std::endl;
+  };
+
+  // Process 0: the output folder, the first summary, the mesh.
+  std::unique_ptr<OutputFolder> folder;
+  fs::path out_dir, summary_path;
+  nlohmann::json summary;
+  Mesh mesh;
+  double mesh_seconds = 0.0;
+  run_collectively(comm, [&] {
+    if (!root) return;
+    try {
+      folder = std::make_unique<OutputFolder>(
+          options.output_dir, options.overwrite ? EarlierRun::Overwrite : EarlierRun::Refuse);
+    } catch (const OutputFolderError& e) {
+      throw std::invalid_argument(e.what());  // found before any work, as in one process
+    }
+    out_dir = folder->path();
+    summary_path = out_dir / "summary.json";
+    start_summary(summary, config, options);
+    write_json(summary_path, summary);
+    const auto t0 = Clock::now();
+    mesh = build_mesh(config, out_dir.string());
+    mesh_seconds = seconds_since(t0);
+  });
+  auto record_failure = [&](const std::string& message) {
+    if (!root) return;
+    summary["status"] = "failed";
+    summary["error"] = message;
+    try {
+      write_json(summary_path, summary);
+    } catch (const std::exception&) {
+    }
+  };
+
+  try {
+    broadcast_mesh(mesh, comm);
+    const auto setup0 = Clock::now();
+    DistributedAssembly assembly(mesh, config, comm);
+    DistributedSystem system(assembly);
+    std::unique_ptr<BackwardEuler> integrator;
+    run_collectively(comm, [&] {
+      integrator = std::make_unique<BackwardEuler>(system, config.time, config.linear_solver);
+    });
+    const PartitionedNumbering& numbering = assembly.numbering();
+    const Index n_global = numbering.size();
+
+    // Gathers of owned arrays into the rank-major whole on process 0.
+    std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
+    for (int r = 0; r < size; ++r) {
+      const auto ri = static_cast<std::size_t>(r);
+      counts[ri] = static_cast<int>(numbering.offset[ri + 1] - numbering.offset[ri]);
+      displs[ri] = static_cast<int>(numbering.offset[ri]);
+    }
+    // The Dirichlet flags of the whole system in the one-process layout (the probe line's
+    // drained ends).
+    std::vector<char> constrained_all(root ? static_cast<std::size_t>(n_global) : 0);
+    {
+      std::vector<char> flags(root ? static_cast<std::size_t>(n_global) : 0);
+      MPI_Gatherv(system.constrained().data(), static_cast<int>(system.size()), MPI_CHAR,
+                  flags.data(), counts.data(), displs.data(), MPI_CHAR, 0, comm);
+      if (root)
+        for (Index node = 0; node < mesh.num_nodes(); ++node) {
+          const auto nd = static_cast<std::size_t>(node);
+          for (int c = 0; c < 3; ++c)
+            constrained_all[static_cast<std::size_t>(3 * node + c)] =
+                flags[static_cast<std::size_t>(numbering.u_base[nd] + c)];
+          if (node < mesh.num_vertices)
+            constrained_all[static_cast<std::size_t>(3 * mesh.num_nodes() + node)] =
+                flags[static_cast<std::size_t>(numbering.p_index[nd])];
+        }
+    }
+    std::unique_ptr<ProbeRecorder> probes;
+    std::unique_ptr<ReactionCsv> reaction_csv;
+    std::unique_ptr<FieldWriter> fields;
+    run_collectively(comm, [&] {
+      if (!root) return;
+      probes = std::make_unique<ProbeRecorder>(build_probes(config, mesh), constrained_all,
+                                               3 * mesh.num_nodes(), out_dir.string());
+      probes->describe(summary);
+      if (!config.output.reactions.empty())
+        reaction_csv = std::make_unique<ReactionCsv>((out_dir / "reactions.csv").string());
+      if (!config.output.fields.empty())
+        fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh,
+                                               field_layout(config.output.fields));
+    });
+    const double setup_seconds = seconds_since(setup0);
+
+    // The partition, per process.
+    const Subdomain& sub = assembly.subdomain();
+    double owned_elements = 0.0;
+    for (char c : sub.tet_owned) owned_elements += c ? 1.0 : 0.0;
+    const std::vector<double> elements = gather(owned_elements, comm);
+    const std::vector<double> local_elements =
+        gather(static_cast<double>(sub.mesh.tets.size()), comm);
+    const std::vector<double> owned_unknowns = gather(static_cast<double>(system.size()), comm);
+    if (root) {
+      summary["mesh"] = {{"nodes", mesh.num_nodes()},
+                         {"vertices", mesh.num_vertices},
+                         {"tetrahedra", mesh.tets.size()},
+                         {"unknowns", n_global}};
+      summary["parallel"] = {{"processes", size},
+                             {"partitioner", "METIS_PartMeshDual on process 0"},
+                             {"owned_elements", elements},
+                             {"elements_with_ghosts", local_elements},
+                             {"owned_unknowns", owned_unknowns}};
+      summary["outputs"] = nlohmann::json::array();
+      summary["steps"] = nlohmann::json::array();
+    }
+
+    // Gathers an owned state into the one-process layout on process 0.
+    std::vector<double> partitioned(root ? static_cast<std::size_t>(n_global) : 0);
+    auto to_serial = [&](const std::vector<double>& owned, std::vector<double>& u,
+                         std::vector<double>& p) {
+      MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, partitioned.data(),
+                  counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+      if (!root) return;
+      u.assign(static_cast<std::size_t>(3 * mesh.num_nodes()), 0.0);
+      p.assign(static_cast<std::size_t>(mesh.num_vertices), 0.0);
+      for (Index node = 0; node < mesh.num_nodes(); ++node) {
+        for (int c = 0; c < 3; ++c)
+          u[static_cast<std::size_t>(3 * node + c)] = partitioned[static_cast<std::size_t>(
+              numbering.u_base[static_cast<std::size_t>(node)] + c)];
+        if (node < mesh.num_vertices)
+          p[static_cast<std::size_t>(node)] = partitioned[static_cast<std::size_t>(
+              numbering.p_index[static_cast<std::size_t>(node)])];
+      }
+    };
+    // Reactions: each process's share from its own elements, summed on process 0.
+    Vec owned_view = nullptr;
+    petsc_check(VecCreateMPIWithArray(comm, 1, static_cast<PetscInt>(system.size()),
+                                      static_cast<PetscInt>(n_global), nullptr, &owned_view),
+                "VecCreateMPIWithArray");
+    std::vector<double> y_local, ydot_local, u, p;
+    auto local_state = [&](const std::vector<double>& owned, std::vector<double>& local) {
+      petsc_check(VecPlaceArray(owned_view, owned.data()), "VecPlaceArray");
+      assembly.to_local(owned_view, local);
+      VecResetArray(owned_view);
+    };
+    auto write_output = [&](double t, const std::vector<double>& y,
+                            const std::vector<double>& ydot) {
+      to_serial(y, u, p);
+      nlohmann::json o{{"t", t}};
+      std::optional<LineMeasures> m;
+      if (!config.output.reactions.empty()) {
+        local_state(y, y_local);
+        local_state(ydot, ydot_local);
+        std::vector<std::array<double, 3>> forces;
+        run_collectively(comm, [&] {
+          forces = assembly.local_problem().reactions(config.output.reactions, t, y_local.data(),
+                                                      ydot_local.data());
+        });
+        std::vector<double> flat(3 * forces.size()), total(flat.size());
+        for (std::size_t b = 0; b < forces.size(); ++b)
+          for (int c = 0; c < 3; ++c)
+            flat[3 * b + static_cast<std::size_t>(c)] = forces[b][static_cast<std::size_t>(c)];
+        MPI_Reduce(flat.data(), total.data(), static_cast<int>(flat.size()), MPI_DOUBLE, MPI_SUM, 0,
+                   comm);
+        if (root) {
+          for (std::size_t b = 0; b < forces.size(); ++b)
+            for (int c = 0; c < 3; ++c)
+              forces[b][static_cast<std::size_t>(c)] = total[3 * b + static_cast<std::size_t>(c)];
+          const auto names = BiphasicProblem::reaction_labels(config.output.reactions);
+          reaction_csv->write(t, names, forces);
+          nlohmann::json r = nlohmann::json::object();
+          for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
+          o["reactions"] = r;
+        }
+      }
+      run_collectively(comm, [&] {
+        if (!root) return;
+        m = probes->write(t, u, p);
+        if (fields) fields->write(t, u, p, {});
+        if (m) {
+          o["p_mid"] = m->p_mid;
+          o["overshoot"] = m->defined ? nlohmann::json(m->overshoot) : nlohmann::json(nullptr);
+          o["oscillation"] = m->defined ? nlohmann::json(m->oscillation) : nlohmann::json(nullptr);
+        }
+        summary["outputs"].push_back(o);
+      });
+      return m;
+    };
+
+    auto record_counters = [&] {
+      const AssemblyStats& as = system.stats();
+      const LinearSolverStats& ls = integrator->linear_solver_stats();
+      const IntegratorStats& is = integrator->stats();
+      const std::vector<double> wall = gather(seconds_since(wall0), comm);
+      const std::vector<double> memory = gather(peak_memory_gb(), comm);
+      const std::vector<double> assembly_seconds =
+          gather(as.residual_seconds + as.jacobian_seconds, comm);
+      const std::vector<double> factor_seconds = gather(ls.factor_seconds, comm);
+      if (!root) return;
+      summary["counters"] = {{"steps", is.steps},
+                             {"newton_iterations", is.newton_iterations},
+                             {"nonlinear_failures", is.nonlinear_failures},
+                             {"cutbacks", is.cutbacks.size()},
+                             {"residual_evaluations", as.residual_evaluations},
+                             {"jacobian_evaluations", as.jacobian_evaluations},
+                             {"factorizations", ls.factorizations},
+                             {"linear_solves", ls.solves}};
+      summary["timings"] = {{"wall", wall[0]},
+                            {"mesh", mesh_seconds},
+                            {"setup", setup_seconds},
+                            {"residual_assembly", as.residual_seconds},
+                            {"jacobian_assembly", as.jacobian_seconds},
+                            {"factorization", ls.factor_seconds},
+                            {"linear_solve", ls.solve_seconds}};
+      summary["parallel"]["wall_seconds"] = wall;
+      summary["parallel"]["peak_memory_gb"] = memory;
+      summary["parallel"]["assembly_seconds"] = assembly_seconds;
+      summary["parallel"]["factorization_seconds"] = factor_seconds;
+    };
+
+    std::vector<double> y(static_cast<std::size_t>(system.size()), 0.0);
+    system.apply_dirichlet(0.0, y.data(), nullptr);
+    write_output(0.0, y, std::vector<double>(y.size(), 0.0));
+    const int every = std::max(1, config.output.every);
+    const int planned = integrator->planned_outputs();
+    integrator->run(
+        0.0, y,
+        [&](const StepInfo& info, const std::vector<double>& ys, const std::vector<double>& ydots) {
+          const bool output_now = info.step % every == 0 || info.step == planned;
+          std::string mid;
+          if (output_now)
+            if (const std::optional<LineMeasures> m = write_output(info.t, ys, ydots)) {
+              char buf[128];
+              std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f",
+                            m->p_mid, m->defined ? m->overshoot : 0.0,
+                            m->defined ? m->oscillation : 0.0);
+              mid = buf;
+            }
+          if (root)
+            summary["steps"].push_back({{"step", info.step},
+                                        {"t", info.t},
+                                        {"dt", info.dt},
+                                        {"sub_steps", info.sub_steps},
+                                        {"newton_iterations", info.newton_iterations},
+                                        {"jacobian_evaluations", info.setups},
+                                        {"residual_u", info.residual_u},
+                                        {"residual_p", info.residual_p}});
+          char line[256];
+          std::snprintf(line, sizeof line,
+                        "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
+                        "|R_p| %.2e mm3/s",
+                        info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
+                        info.residual_u, info.residual_p);
+          say(line + mid);
+        });
+    VecDestroy(&owned_view);
+    record_counters();
+    if (root) {
+      summary["status"] = "completed";
+      write_json(summary_path, summary);
+      std::ostringstream s;
+      s << "done on " << size << " processes: " << summary["counters"]["steps"] << " steps, "
+        << summary["counters"]["newton_iterations"] << " Newton iterations; wall "
+        << summary["timings"]["wall"].get<double>() << " s; output in " << out_dir.string();
+      say(s.str());
+    }
+  } catch (const std::exception& e) {
+    record_failure(e.what());
+    throw;
+  }
+  return summary;
+}
+
+}  // namespace biphasic

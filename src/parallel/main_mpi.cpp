@@ -1,0 +1,71 @@
+// biphasic_mpi: `biphasic run` on several MPI processes (docs/parallel.md). Started by mpirun,
+// directly or through `biphasic`, which hands over to it when mpirun started more than one
+// process. Options: run CASE [-o DIR] [--set key=value ...] [--overwrite] [--quiet]; PETSc
+// options (e.g. -biphasic_mat_mumps_icntl_14 40) may follow on the same command line.
+#include <petscsys.h>
+
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "biphasic/app/run_arguments.hpp"
+#include "biphasic/io/case_file.hpp"
+#include "biphasic/io/output_folder.hpp"
+#include "biphasic/parallel/distributed_run.hpp"
+#include "biphasic/time/progress_meter.hpp"
+#include "biphasic/time/time_integrator.hpp"
+
+namespace {
+
+int run(const std::vector<std::string>& args, int rank) {
+  if (args.empty() || args[0] != "run")
+    throw std::invalid_argument(
+        "biphasic_mpi runs cases only: biphasic_mpi run CASE [-o DIR] [--set key=value ...] "
+        "[--overwrite] [--quiet] (check, schema and help: biphasic)");
+  biphasic::RunArguments parsed =
+      biphasic::parse_run_arguments({args.begin() + 1, args.end()}, /*foreign_options=*/true);
+  if (!parsed.restart_dir.empty())
+    throw std::invalid_argument("--restart: a run on several processes cannot be continued yet");
+  const std::string& case_path = parsed.case_path;
+  const std::vector<std::string>& overrides = parsed.overrides;
+  biphasic::RunOptions& options = parsed.options;
+  const std::string& out_dir = parsed.output_dir;
+  const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
+  options.output_dir =
+      out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
+  options.overrides = overrides;
+  options.quiet = options.quiet || rank != 0;
+  biphasic::run_distributed(config, options, PETSC_COMM_WORLD);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 2;
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  int status = 0;
+  // Every process reads the case and meets the same errors; process 0 reports them.
+  auto report = [&](const std::string& text, int code) {
+    if (rank == 0) std::cerr << text;
+    status = code;
+  };
+  try {
+    status = run(std::vector<std::string>(argv + 1, argv + argc), rank);
+  } catch (const biphasic::CaseError& e) {
+    std::string text =
+        "error: the case has " + std::to_string(e.problems().size()) + " problem(s):\n";
+    for (const auto& p : e.problems()) text += "  " + p + "\n";
+    report(text, 1);
+  } catch (const std::invalid_argument& e) {
+    report(std::string("error: ") + e.what() + "\n", 1);
+  } catch (const biphasic::OutputFolderError& e) {
+    report(std::string("error: ") + e.what() + "\n", 1);
+  } catch (const std::exception& e) {
+    report(std::string("error: ") + e.what() + "\n", 2);
+  }
+  PetscFinalize();
+  return status;
+}

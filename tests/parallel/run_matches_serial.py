@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""`mpiexec -n N biphasic run CASE` against `biphasic run CASE` on one process (ctest label mpi).
+
+The line probe (every row, u and p) and the reactions (every output) must agree to 1e-8 of
+their largest value, with the same Newton iterations step by step; the summary must record
+the processes and their partition. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def largest_difference(a, b, keys):
+    worst = 0.0
+    for key in keys:
+        scale = max(abs(float(r[key])) for r in a) or 1.0
+        diff = max(abs(float(x[key]) - float(y[key])) for x, y in zip(a, b))
+        worst = max(worst, diff / scale)
+    return worst
+
+
+def main():
+    biphasic, mpiexec, processes, case = sys.argv[1:5]
+    extra = sys.argv[5:]
+    overrides = ["--set", 'output.reactions=["top", "bottom"]'] + extra
+    with tempfile.TemporaryDirectory() as tmp:
+        serial, parallel = os.path.join(tmp, "serial"), os.path.join(tmp, "parallel")
+        subprocess.run([biphasic, "run", case, "-o", serial, "--quiet"] + overrides, check=True)
+        subprocess.run([mpiexec, "--oversubscribe", "-n", processes, biphasic, "run", case, "-o",
+                        parallel] + overrides, check=True)
+        failures = []
+        a, b = read_csv(os.path.join(serial, "line.csv")), read_csv(os.path.join(parallel, "line.csv"))
+        if len(a) != len(b):
+            failures.append(f"line.csv: {len(a)} rows on one process, {len(b)} on {processes}")
+        else:
+            d = largest_difference(a, b, ["ux", "uy", "uz", "p"])
+            print(f"line.csv: largest difference {d:.2e} of the largest value")
+            if not d <= 1e-8:
+                failures.append(f"line.csv differs by {d:.2e}")
+        a = read_csv(os.path.join(serial, "reactions.csv"))
+        b = read_csv(os.path.join(parallel, "reactions.csv"))
+        if len(a) != len(b) or len(a) == 0:
+            failures.append(f"reactions.csv: {len(a)} rows on one process, {len(b)} on {processes}")
+        else:
+            d = largest_difference(a, b, ["Fx", "Fy", "Fz"])
+            print(f"reactions.csv: largest difference {d:.2e} of the largest value")
+            if not d <= 1e-8:
+                failures.append(f"reactions.csv differs by {d:.2e}")
+        with open(os.path.join(serial, "summary.json")) as f:
+            s = json.load(f)
+        with open(os.path.join(parallel, "summary.json")) as f:
+            p = json.load(f)
+        newton_s = [x["newton_iterations"] for x in s["steps"]]
+        newton_p = [x["newton_iterations"] for x in p["steps"]]
+        if newton_s != newton_p:
+            failures.append(f"Newton iterations {newton_s} on one process, {newton_p} on {processes}")
+        if p.get("status") != "completed" or p["parallel"]["processes"] != int(processes):
+            failures.append("summary: status or process count wrong")
+        if sum(p["parallel"]["owned_elements"]) != p["mesh"]["tetrahedra"]:
+            failures.append("summary: owned elements do not add up to the mesh")
+        for f in failures:
+            print("FAIL:", f)
+        return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
