@@ -55,10 +55,11 @@ void check_supported(const Config& config, const RunOptions& options) {
   if (config.time.integrator != Integrator::BackwardEuler)
     throw std::invalid_argument(
         "time.integrator: only \"backward_euler\" runs on several processes so far");
-  if (config.linear_solver.type != LinearSolverType::Mumps)
+  if (config.linear_solver.type != LinearSolverType::Mumps &&
+      config.linear_solver.type != LinearSolverType::Iterative)
     throw std::invalid_argument(
-        "linear_solver.type: only \"mumps\" (the parallel MUMPS through PETSc) runs on several "
-        "processes so far");
+        "linear_solver.type: \"mumps\" (the parallel MUMPS) and \"iterative\" (FGMRES with a "
+        "field-split preconditioner) run on several processes; klu and umfpack on one only");
   for (FieldQuantity q : config.output.fields)
     if (q != FieldQuantity::Displacement && q != FieldQuantity::Pressure)
       throw std::invalid_argument("output.fields: \"" + to_string(q) +
@@ -295,7 +296,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                              {"residual_evaluations", as.residual_evaluations},
                              {"jacobian_evaluations", as.jacobian_evaluations},
                              {"factorizations", ls.factorizations},
-                             {"linear_solves", ls.solves}};
+                             {"linear_solves", ls.solves},
+                             {"krylov_iterations", ls.krylov_iterations},
+                             {"max_krylov_iterations", ls.max_krylov_iterations}};
       summary["timings"] = {{"wall", wall[0]},
                             {"mesh", mesh_seconds},
                             {"setup", setup_seconds},

@@ -105,11 +105,26 @@ SUNMatrix DistributedSystem::new_jacobian_matrix(SUNContext ctx) const {
 LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& config,
                                                      SUNContext ctx, LinearSolverStats* stats,
                                                      const SaddlePointStructure*) const {
-  if (config.type != LinearSolverType::Mumps)
-    throw std::invalid_argument(
-        "linear_solver.type: only \"mumps\" (the parallel MUMPS through PETSc) runs on several "
-        "processes so far");
-  return make_petsc_direct_solver(assembly_.comm(), ctx, stats);
+  if (config.type == LinearSolverType::Mumps)
+    return make_petsc_direct_solver(assembly_.comm(), ctx, stats);
+  if (config.type == LinearSolverType::Iterative) {
+    FieldSplitLayout layout;
+    layout.owned = size();
+    layout.owned_u = num_u_;
+    layout.first_owned = assembly_.first_owned();
+    const Subdomain& sub = assembly_.subdomain();
+    const auto& owned = assembly_.dofs().owned();
+    for (Index k = 0; k < num_u_; k += 3) {
+      const Point& x =
+          sub.mesh.nodes[static_cast<std::size_t>(owned[static_cast<std::size_t>(k)] / 3)];
+      layout.coordinates.insert(layout.coordinates.end(), x.begin(), x.end());
+    }
+    return make_petsc_fieldsplit_solver(assembly_.comm(), config.krylov, std::move(layout), ctx,
+                                        stats);
+  }
+  throw std::invalid_argument(
+      "linear_solver.type: \"mumps\" (the parallel MUMPS) and \"iterative\" (FGMRES with a "
+      "field-split preconditioner) run on several processes; klu and umfpack on one only");
 }
 
 std::pair<double, double> DistributedSystem::field_norms(const double* F) const {
@@ -149,9 +164,11 @@ double DistributedSystem::gls_time_scale() const {
 
 SaddlePointStructure DistributedSystem::saddle_point_structure(
     std::function<std::pair<double, double>()>) const {
-  throw std::runtime_error(
-      "linear_solver.type = \"iterative\": its block preconditioner does not run on several "
-      "processes yet");
+  // Only what describes the owned range; the PETSc field-split solver builds its own splits.
+  SaddlePointStructure s;
+  s.num_u = num_u_;
+  s.constrained = constrained_;
+  return s;
 }
 
 }  // namespace biphasic

@@ -2,7 +2,9 @@
 
 #include <nvector/nvector_parallel.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "biphasic/parallel/petsc_check.hpp"
@@ -42,7 +44,22 @@ struct KspContent {
   LinearSolverStats* stats = nullptr;
   bool configured = false;
   int last_flag = 0;
+  /// Sets the KSP and PC up on the first set-up (the operators are known then).
+  std::function<void(KSP)> configure;
 };
+
+/// LU by the parallel MUMPS, ordering PORD.
+void configure_direct(KSP ksp) {
+  PC pc = nullptr;
+  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, PCLU), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+  Mat F = nullptr;
+  petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+  petsc_check(MatMumpsSetIcntl(F, 7, 4), "MatMumpsSetIcntl(7: PORD)");
+}
 
 KspContent* content(SUNLinearSolver S) { return static_cast<KspContent*>(S->content); }
 
@@ -63,16 +80,9 @@ int ksp_setup(SUNLinearSolver S, SUNMatrix A) {
     Mat J = petsc_matrix(A);
     petsc_check(KSPSetOperators(c.ksp, J, J), "KSPSetOperators");
     if (!c.configured) {
-      PC pc = nullptr;
-      petsc_check(KSPSetType(c.ksp, KSPPREONLY), "KSPSetType");
-      petsc_check(KSPGetPC(c.ksp, &pc), "KSPGetPC");
-      petsc_check(PCSetType(pc, PCLU), "PCSetType");
-      petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-      petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-      Mat F = nullptr;
-      petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-      petsc_check(MatMumpsSetIcntl(F, 7, 4), "MatMumpsSetIcntl(7: PORD)");
+      // The prefix first: the splits take theirs from it when they are made.
       petsc_check(KSPSetOptionsPrefix(c.ksp, "biphasic_"), "KSPSetOptionsPrefix");
+      c.configure(c.ksp);
       petsc_check(KSPSetFromOptions(c.ksp), "KSPSetFromOptions");
       c.configured = true;
       ++c.stats->analyses;
@@ -104,9 +114,15 @@ int ksp_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     petsc_check(code, "KSPSolve");
     KSPConvergedReason reason;
     petsc_check(KSPGetConvergedReason(c.ksp, &reason), "KSPGetConvergedReason");
-    if (reason < 0)
-      throw std::runtime_error("the PETSc solve did not converge (KSPConvergedReason " +
-                               std::to_string(static_cast<int>(reason)) + ")");
+    PetscInt its = 0;
+    petsc_check(KSPGetIterationNumber(c.ksp, &its), "KSPGetIterationNumber");
+    c.stats->krylov_iterations += its;
+    c.stats->max_krylov_iterations = std::max<long>(c.stats->max_krylov_iterations, its);
+    if (reason < 0) {
+      // Recoverable: a new Jacobian or a shorter step may converge.
+      c.last_flag = SUNLS_CONV_FAIL;
+      return c.last_flag;
+    }
     ++c.stats->solves;
     c.stats->solve_seconds += seconds_since(t0);
     c.last_flag = 0;
@@ -119,12 +135,16 @@ int ksp_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype) {
 
 }  // namespace
 
-LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats) {
+namespace {
+
+LinearSolverPtr make_ksp_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats,
+                                std::function<void(KSP)> configure) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   if (!S) throw std::runtime_error("SUNLinSolNewEmpty failed");
   auto* c = new KspContent{};
   c->comm = comm;
   c->stats = stats;
+  c->configure = std::move(configure);
   S->content = c;
   S->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
   S->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
@@ -147,6 +167,71 @@ LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSo
   LinearSolverPtr owner(S);
   petsc_check(KSPCreate(comm, &c->ksp), "KSPCreate");
   return owner;
+}
+
+}  // namespace
+
+LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats) {
+  return make_ksp_solver(comm, ctx, stats, configure_direct);
+}
+
+LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& config,
+                                             FieldSplitLayout layout, SUNContext ctx,
+                                             LinearSolverStats* stats) {
+  auto configure = [comm, config, layout = std::move(layout)](KSP ksp) {
+    petsc_check(KSPSetType(ksp, KSPFGMRES), "KSPSetType");
+    petsc_check(KSPGMRESSetRestart(ksp, config.restart), "KSPGMRESSetRestart");
+    petsc_check(KSPSetTolerances(ksp, config.rtol, 0.0, PETSC_DEFAULT, config.max_iterations),
+                "KSPSetTolerances");
+    petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+    PC pc = nullptr;
+    petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    petsc_check(PCSetType(pc, PCFIELDSPLIT), "PCSetType");
+    IS u = nullptr, p = nullptr;
+    const auto owned_u = static_cast<PetscInt>(layout.owned_u);
+    const auto owned_p = static_cast<PetscInt>(layout.owned - layout.owned_u);
+    const auto first = static_cast<PetscInt>(layout.first_owned);
+    petsc_check(ISCreateStride(comm, owned_u, first, 1, &u), "ISCreateStride");
+    petsc_check(ISSetBlockSize(u, 3), "ISSetBlockSize");
+    petsc_check(ISCreateStride(comm, owned_p, first + owned_u, 1, &p), "ISCreateStride");
+    // The rigid-body modes of the owned nodes, picked up by the displacement split's matrix.
+    Vec xyz = nullptr;
+    petsc_check(VecCreateMPI(comm, owned_u, PETSC_DETERMINE, &xyz), "VecCreateMPI");
+    petsc_check(VecSetBlockSize(xyz, 3), "VecSetBlockSize");
+    PetscScalar* a = nullptr;
+    petsc_check(VecGetArray(xyz, &a), "VecGetArray");
+    std::copy(layout.coordinates.begin(), layout.coordinates.end(), a);
+    VecRestoreArray(xyz, &a);
+    MatNullSpace modes = nullptr;
+    petsc_check(MatNullSpaceCreateRigidBody(xyz, &modes), "MatNullSpaceCreateRigidBody");
+    petsc_check(PetscObjectCompose(reinterpret_cast<PetscObject>(u), "nearnullspace",
+                                   reinterpret_cast<PetscObject>(modes)),
+                "PetscObjectCompose");
+    MatNullSpaceDestroy(&modes);
+    VecDestroy(&xyz);
+    petsc_check(PCFieldSplitSetIS(pc, "u", u), "PCFieldSplitSetIS");
+    petsc_check(PCFieldSplitSetIS(pc, "p", p), "PCFieldSplitSetIS");
+    ISDestroy(&u);
+    ISDestroy(&p);
+    petsc_check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PCFieldSplitSetType");
+    petsc_check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER),
+                "PCFieldSplitSetSchurFactType");
+    petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
+                "PCFieldSplitSetSchurPre");
+    // Defaults of the splits, as options so that the user's options (read later) win.
+    const char* defaults[][2] = {{"-biphasic_fieldsplit_u_ksp_type", "preonly"},
+                                 {"-biphasic_fieldsplit_u_pc_type", "gamg"},
+                                 {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
+                                 {"-biphasic_fieldsplit_p_pc_type", "lu"},
+                                 {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
+                                 {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}};
+    for (const auto& d : defaults) {
+      PetscBool set = PETSC_FALSE;
+      petsc_check(PetscOptionsHasName(nullptr, nullptr, d[0], &set), "PetscOptionsHasName");
+      if (!set) petsc_check(PetscOptionsSetValue(nullptr, d[0], d[1]), "PetscOptionsSetValue");
+    }
+  };
+  return make_ksp_solver(comm, ctx, stats, configure);
 }
 
 }  // namespace biphasic

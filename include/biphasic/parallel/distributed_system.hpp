@@ -43,7 +43,8 @@ class DistributedSystem final : public SemidiscreteSystem {
   void jacobian_into(double t, const double* y, const double* ydot, double cj, SUNMatrix J,
                      double* rate_values = nullptr) override;
   /// linear_solver.type = "mumps": the parallel MUMPS through PETSc (make_petsc_direct_solver);
-  /// other types throw std::invalid_argument naming the key.
+  /// "iterative": FGMRES with the field-split preconditioner (make_petsc_fieldsplit_solver);
+  /// klu and umfpack throw std::invalid_argument naming the key.
   LinearSolverPtr new_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
                                     LinearSolverStats* stats,
                                     const SaddlePointStructure* saddle) const override;
@@ -57,7 +58,7 @@ class DistributedSystem final : public SemidiscreteSystem {
   bool has_flux_perturbation() const override;
   /// The smallest over the processes.
   double gls_time_scale() const override;
-  /// Throws std::runtime_error: the block preconditioner is not yet distributed.
+  /// The owned range's layout only (no Schur term): the PETSc solver makes its own splits.
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const override;
 

@@ -7,7 +7,10 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include <vector>
+
 #include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/mesh/mesh.hpp"
 
 namespace biphasic {
 
@@ -24,5 +27,25 @@ Mat petsc_matrix(SUNMatrix M);
 /// symbolic analysis is done once; each set-up refactorises. Vectors are N_Vector_Parallel
 /// whose local arrays are the owned entries. Counts set-ups as factorisations in `stats`.
 LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats);
+
+/// What the field-split preconditioner needs of this process's owned range: how many of its
+/// unknowns are displacements (they come first, 3 per node) and those nodes' coordinates [mm]
+/// (x, y, z per node, for the rigid-body modes).
+struct FieldSplitLayout {
+  Index owned_u = 0, owned = 0, first_owned = 0;
+  std::vector<double> coordinates;
+};
+
+/// Right-preconditioned FGMRES over a PETSc KSP on `comm`, solved to `config.rtol` (so that
+/// Newton sees an exact solve) within `config.max_iterations`, restart `config.restart`, with a
+/// field-split Schur preconditioner, block upper triangular as the one-process solver's:
+/// the displacement block by one V-cycle of PETSc's smoothed-aggregation AMG (GAMG) with the
+/// six rigid-body modes as near null space (block size 3), the Schur complement by PETSc's
+/// A_pp − A_pu diag(A_uu)⁻¹ A_up ("selfp"), factorised by MUMPS. Every choice can be changed by
+/// PETSc options with the prefix "biphasic_" (e.g. -biphasic_fieldsplit_u_pc_type hypre).
+/// Counts Krylov iterations in `stats`; a solve that does not converge is a recoverable failure.
+LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& config,
+                                             FieldSplitLayout layout, SUNContext ctx,
+                                             LinearSolverStats* stats);
 
 }  // namespace biphasic
