@@ -3,6 +3,7 @@
 #include <nvector/nvector_parallel.h>
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "biphasic/parallel/petsc_check.hpp"
@@ -104,7 +105,7 @@ SUNMatrix DistributedSystem::new_jacobian_matrix(SUNContext ctx) const {
 
 LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& config,
                                                      SUNContext ctx, LinearSolverStats* stats,
-                                                     const SaddlePointStructure*) const {
+                                                     const SaddlePointStructure* saddle) const {
   if (config.type == LinearSolverType::Mumps)
     return make_petsc_direct_solver(assembly_.comm(), ctx, stats);
   if (config.type == LinearSolverType::Iterative) {
@@ -119,6 +120,7 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
           sub.mesh.nodes[static_cast<std::size_t>(owned[static_cast<std::size_t>(k)] / 3)];
       layout.coordinates.insert(layout.coordinates.end(), x.begin(), x.end());
     }
+    if (saddle) layout.schur_term = saddle->schur_term;
     return make_petsc_fieldsplit_solver(assembly_.comm(), config.krylov, std::move(layout), ctx,
                                         stats);
   }
@@ -163,11 +165,40 @@ double DistributedSystem::gls_time_scale() const {
 }
 
 SaddlePointStructure DistributedSystem::saddle_point_structure(
-    std::function<std::pair<double, double>()>) const {
-  // Only what describes the owned range; the PETSc field-split solver builds its own splits.
+    std::function<std::pair<double, double>()> shifts) const {
+  // The owned range's layout, and the Schur coupling term of this process's elements indexed
+  // in the pressure block (owned pressures of process 0, then 1, ...), Dirichlet pressures out.
+  const PartitionedNumbering& num = assembly_.numbering();
+  const auto parts = num.owned_vertices.size();
+  std::vector<Index> block_start(parts + 1, 0);
+  for (std::size_t r = 0; r < parts; ++r)
+    block_start[r + 1] = block_start[r] + num.owned_vertices[r];
+  BiphasicProblem& local = assembly_.local_problem();
+  const Index local_nu = local.num_u();
+  const Index vertices = local.size() - local_nu;
+  auto block = std::make_shared<std::vector<Index>>(static_cast<std::size_t>(vertices), -1);
+  for (Index v = 0; v < vertices; ++v) {
+    const Index i = local_nu + v;
+    if (local.constrained()[static_cast<std::size_t>(i)]) continue;
+    const Index g = assembly_.dofs().global(i);
+    const auto r = static_cast<std::size_t>(
+        std::upper_bound(num.offset.begin(), num.offset.end(), g) - num.offset.begin() - 1);
+    (*block)[static_cast<std::size_t>(v)] =
+        g - num.offset[r] - 3 * num.owned_nodes[r] + block_start[r];
+  }
   SaddlePointStructure s;
   s.num_u = num_u_;
   s.constrained = constrained_;
+  s.schur_term = [&local, block, shifts = std::move(shifts)](std::vector<PressureEntry>& out) {
+    const auto [cj, cj_gls] = shifts();
+    std::vector<PressureEntry> mine;
+    local.pressure_schur_term(cj, cj_gls, mine);
+    for (const PressureEntry& e : mine) {
+      const Index r = (*block)[static_cast<std::size_t>(e.row)];
+      const Index c = (*block)[static_cast<std::size_t>(e.col)];
+      if (r >= 0 && c >= 0) out.push_back({r, c, e.value});
+    }
+  };
   return s;
 }
 

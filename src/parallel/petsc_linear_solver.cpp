@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "biphasic/parallel/petsc_check.hpp"
@@ -46,6 +47,61 @@ struct KspContent {
   int last_flag = 0;
   /// Sets the KSP and PC up on the first set-up (the operators are known then).
   std::function<void(KSP)> configure;
+  /// Before every set-up, with the new matrix (may be empty).
+  std::function<void(KSP, Mat)> refresh;
+};
+
+/// The user Schur preconditioner S̃ = A_pp + C of the field-split solver, rebuilt at every
+/// set-up: A_pp taken from the Jacobian, C (the coupling term) assembled through COO.
+struct SchurApproximation {
+  MPI_Comm comm;
+  std::function<void(std::vector<PressureEntry>&)> term;
+  PetscInt owned_p = 0;
+  IS p = nullptr;
+  Mat App = nullptr, C = nullptr, Sp = nullptr;
+  std::vector<PressureEntry> entries;
+  std::vector<PetscScalar> values;
+  ~SchurApproximation() {
+    if (p) ISDestroy(&p);
+    for (Mat* m : {&App, &C, &Sp})
+      if (*m) MatDestroy(m);
+  }
+
+  void refresh(KSP ksp, Mat J) {
+    petsc_check(MatCreateSubMatrix(J, p, p, App ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &App),
+                "MatCreateSubMatrix");
+    entries.clear();
+    term(entries);
+    if (!C) {
+      petsc_check(MatCreate(comm, &C), "MatCreate");
+      petsc_check(MatSetSizes(C, owned_p, owned_p, PETSC_DETERMINE, PETSC_DETERMINE),
+                  "MatSetSizes");
+      petsc_check(MatSetType(C, MATAIJ), "MatSetType");
+      std::vector<PetscInt> rows(entries.size()), cols(entries.size());
+      for (std::size_t k = 0; k < entries.size(); ++k) {
+        rows[k] = static_cast<PetscInt>(entries[k].row);
+        cols[k] = static_cast<PetscInt>(entries[k].col);
+      }
+      petsc_check(MatSetPreallocationCOO(C, static_cast<PetscCount>(entries.size()), rows.data(),
+                                         cols.data()),
+                  "MatSetPreallocationCOO");
+    }
+    values.resize(entries.size());
+    for (std::size_t k = 0; k < entries.size(); ++k) values[k] = entries[k].value;
+    petsc_check(MatSetValuesCOO(C, values.data(), INSERT_VALUES), "MatSetValuesCOO");
+    if (!Sp) {
+      petsc_check(MatDuplicate(App, MAT_COPY_VALUES, &Sp), "MatDuplicate");
+      petsc_check(MatAXPY(Sp, 1.0, C, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+    } else {
+      petsc_check(MatZeroEntries(Sp), "MatZeroEntries");
+      petsc_check(MatAXPY(Sp, 1.0, App, SUBSET_NONZERO_PATTERN), "MatAXPY");
+      petsc_check(MatAXPY(Sp, 1.0, C, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    }
+    PC pc = nullptr;
+    petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, Sp),
+                "PCFieldSplitSetSchurPre");
+  }
 };
 
 /// LU by the parallel MUMPS, ordering PORD.
@@ -83,9 +139,12 @@ int ksp_setup(SUNLinearSolver S, SUNMatrix A) {
       // The prefix first: the splits take theirs from it when they are made.
       petsc_check(KSPSetOptionsPrefix(c.ksp, "biphasic_"), "KSPSetOptionsPrefix");
       c.configure(c.ksp);
+      if (c.refresh) c.refresh(c.ksp, J);
       petsc_check(KSPSetFromOptions(c.ksp), "KSPSetFromOptions");
       c.configured = true;
       ++c.stats->analyses;
+    } else if (c.refresh) {
+      c.refresh(c.ksp, J);
     }
     petsc_check(KSPSetUp(c.ksp), "KSPSetUp (factorisation)");
     ++c.stats->factorizations;
@@ -138,13 +197,15 @@ int ksp_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype) {
 namespace {
 
 LinearSolverPtr make_ksp_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats,
-                                std::function<void(KSP)> configure) {
+                                std::function<void(KSP)> configure,
+                                std::function<void(KSP, Mat)> refresh = {}) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   if (!S) throw std::runtime_error("SUNLinSolNewEmpty failed");
   auto* c = new KspContent{};
   c->comm = comm;
   c->stats = stats;
   c->configure = std::move(configure);
+  c->refresh = std::move(refresh);
   S->content = c;
   S->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
   S->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
@@ -178,7 +239,18 @@ LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSo
 LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& config,
                                              FieldSplitLayout layout, SUNContext ctx,
                                              LinearSolverStats* stats) {
-  auto configure = [comm, config, layout = std::move(layout)](KSP ksp) {
+  std::shared_ptr<SchurApproximation> schur;
+  if (layout.schur_term) {
+    schur = std::make_shared<SchurApproximation>();
+    schur->comm = comm;
+    schur->term = layout.schur_term;
+    schur->owned_p = static_cast<PetscInt>(layout.owned - layout.owned_u);
+    petsc_check(
+        ISCreateStride(comm, schur->owned_p,
+                       static_cast<PetscInt>(layout.first_owned + layout.owned_u), 1, &schur->p),
+        "ISCreateStride");
+  }
+  auto configure = [comm, config, schur, layout = std::move(layout)](KSP ksp) {
     petsc_check(KSPSetType(ksp, KSPFGMRES), "KSPSetType");
     petsc_check(KSPGMRESSetRestart(ksp, config.restart), "KSPGMRESSetRestart");
     petsc_check(KSPSetTolerances(ksp, config.rtol, 0.0, PETSC_DEFAULT, config.max_iterations),
@@ -216,22 +288,29 @@ LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& 
     petsc_check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "PCFieldSplitSetType");
     petsc_check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER),
                 "PCFieldSplitSetSchurFactType");
-    petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
-                "PCFieldSplitSetSchurPre");
+    if (!schur)
+      petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
+                  "PCFieldSplitSetSchurPre");
     // Defaults of the splits, as options so that the user's options (read later) win.
-    const char* defaults[][2] = {{"-biphasic_fieldsplit_u_ksp_type", "preonly"},
-                                 {"-biphasic_fieldsplit_u_pc_type", "gamg"},
-                                 {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
-                                 {"-biphasic_fieldsplit_p_pc_type", "lu"},
-                                 {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
-                                 {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}};
+    const char* defaults[][2] = {
+        {"-biphasic_fieldsplit_u_ksp_type", "preonly"},
+        {"-biphasic_fieldsplit_u_pc_type", "hypre"},
+        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"},
+        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS"},
+        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i"},
+        {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
+        {"-biphasic_fieldsplit_p_pc_type", "lu"},
+        {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
+        {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}};
     for (const auto& d : defaults) {
       PetscBool set = PETSC_FALSE;
       petsc_check(PetscOptionsHasName(nullptr, nullptr, d[0], &set), "PetscOptionsHasName");
       if (!set) petsc_check(PetscOptionsSetValue(nullptr, d[0], d[1]), "PetscOptionsSetValue");
     }
   };
-  return make_ksp_solver(comm, ctx, stats, configure);
+  std::function<void(KSP, Mat)> refresh;
+  if (schur) refresh = [schur](KSP ksp, Mat J) { schur->refresh(ksp, J); };
+  return make_ksp_solver(comm, ctx, stats, configure, refresh);
 }
 
 }  // namespace biphasic

@@ -58,7 +58,8 @@ class DistributedSystem final : public SemidiscreteSystem {
   bool has_flux_perturbation() const override;
   /// The smallest over the processes.
   double gls_time_scale() const override;
-  /// The owned range's layout only (no Schur term): the PETSc solver makes its own splits.
+  /// The owned range's layout and the Schur coupling term of this process's elements, indexed
+  /// in the pressure block (FieldSplitLayout::schur_term).
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const override;
 
