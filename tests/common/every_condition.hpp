@@ -29,10 +29,12 @@ inline Config every_condition() {
   return cfg;
 }
 
-/// A random state of `problem` (u ~ 0.02 mm, p ~ 0.05 MPa, rates a tenth of those per second)
-/// with its Dirichlet values set at time t; the same for the same seed.
-inline void random_state(const BiphasicProblem& problem, double t, unsigned seed,
-                         std::vector<double>& y, std::vector<double>& ydot) {
+/// A random state of `problem` (a BiphasicProblem or SectionProblem; u ~ 0.02 mm, p ~ 0.05 MPa,
+/// rates a tenth of those per second) with its Dirichlet values set at time t; the same for the
+/// same seed.
+template <class Problem>
+void random_state(const Problem& problem, double t, unsigned seed, std::vector<double>& y,
+                  std::vector<double>& ydot) {
   const auto n = static_cast<std::size_t>(problem.size());
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> d(-1.0, 1.0);

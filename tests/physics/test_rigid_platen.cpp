@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../common/box_mesh.hpp"
+#include "../common/every_condition.hpp"
 #include "biphasic/mesh/section_mesh.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/section_problem.hpp"
@@ -58,17 +59,7 @@ Config platen_config(bool three_d, bool platen, const std::string& stabilisation
 /// A random state (u ~ 0.02, p ~ 0.05, rates a tenth of those), Dirichlet and tied entries set.
 template <class Problem>
 void random_state(Problem& problem, double t, std::vector<double>& y, std::vector<double>& ydot) {
-  const auto n = static_cast<std::size_t>(problem.size());
-  std::mt19937 gen(5);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  y.resize(n);
-  ydot.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool u = static_cast<Index>(i) < problem.num_u();
-    y[i] = (u ? 0.02 : 0.05) * d(gen);
-    ydot[i] = (u ? 0.002 : 0.005) * d(gen);
-  }
-  problem.apply_dirichlet(t, y.data(), ydot.data());
+  test::random_state(problem, t, 5, y, ydot);
 }
 
 /// Largest |FD − exact| over all entries for dF/dy + c_j dF/dẏ (`rate` false) or dF/dẏ
