@@ -1,8 +1,6 @@
 #include "biphasic/time/bdf_integrator.hpp"
 
 #include <ida/ida.h>
-#include <nvector/nvector_serial.h>
-#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
 #include <cmath>
@@ -111,10 +109,9 @@ struct BdfIntegrator::Impl {
     auto* self = static_cast<Impl*>(data);
     self->cj = cj;
     return guarded_callback(self->failure, [&] {
-      self->problem.pattern().restore_into(J);
-      self->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj,
-                             SUNSparseMatrix_Data(J),
-                             self->shift_correction ? self->family.rate_values.data() : nullptr);
+      self->problem.jacobian_into(
+          t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj, J,
+          self->shift_correction ? self->family.rate_values.data() : nullptr);
       self->family.setup_shift = cj;
     });
   }
@@ -129,20 +126,19 @@ BdfIntegrator::BdfIntegrator(SemidiscreteSystem& problem, const TimeConfig& time
         "time.volume_rate = \"conservative\" applies only to backward Euler");
   Impl& m = *impl_;
   const Index n = problem.size();
-  m.yy = N_VNew_Serial(n, m.sc.ctx);
-  m.yp = N_VNew_Serial(n, m.sc.ctx);
-  m.tmp = N_VNew_Serial(n, m.sc.ctx);
-  m.atol = N_VNew_Serial(n, m.sc.ctx);
+  m.yy = problem.new_vector(m.sc.ctx);
+  m.yp = problem.new_vector(m.sc.ctx);
+  m.tmp = problem.new_vector(m.sc.ctx);
+  m.atol = problem.new_vector(m.sc.ctx);
   if (time.integrator == Integrator::AdaptiveBackwardEuler) m.time.bdf.max_order = 1;
   std::tie(atol_displacement_, atol_pressure_) = absolute_tolerances(problem, m.time.bdf);
-  for (Index i = 0; i < n; ++i)
-    NV_Ith_S(m.atol, i) = i < problem.num_u() ? atol_displacement_ : atol_pressure_;
-  m.A = problem.pattern().new_matrix(m.sc.ctx);
+  double* atol = N_VGetArrayPointer(m.atol);
+  for (Index i = 0; i < n; ++i) atol[i] = i < problem.num_u() ? atol_displacement_ : atol_pressure_;
+  m.A = problem.new_jacobian_matrix(m.sc.ctx);
   const SaddlePointStructure saddle = problem.saddle_point_structure([&m] {
     return std::pair{m.cj, m.cj};
   });
-  LinearSolverPtr inner = make_linear_solver(linear_solver, m.sc.ctx, &ls_stats_,
-                                             fill_order(linear_solver, problem.pattern()), &saddle);
+  LinearSolverPtr inner = problem.new_linear_solver(linear_solver, m.sc.ctx, &ls_stats_, &saddle);
   // The iterative solver is a Krylov method already; it solves at the matrix it was given.
   m.shift_correction =
       time.bdf.shift_correction && linear_solver.type != LinearSolverType::Iterative;
