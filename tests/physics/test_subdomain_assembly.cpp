@@ -1,5 +1,5 @@
-// The distributed assembly's decomposition, checked in one process: the mesh split into 1–4
-// parts (mesh/partition.hpp), each part's problem assembled on its own view of the mesh
+// The distributed assembly's decomposition, checked in one process: a two-region mesh split
+// into 1–4 parts (mesh/partition.hpp), each part's problem assembled on its own view of the mesh
 // (physics/assembly_scope.hpp), and the parts' contributions added by the rules of
 // SubdomainDofs. The sums must be the whole mesh's residual, Jacobian, ∂F/∂t, reactions, fluid
 // rates and volume change, computed independently by the one-process problem, to round-off.
@@ -22,7 +22,30 @@
 namespace biphasic {
 namespace {
 
-Mesh test_mesh() { return test::box_mesh({3, 2, 4}, {1.0, 0.8, 1.2}); }
+/// A box in two material regions (below and above z = 0.6 mm), long enough that with three or
+/// four parts some part does not even touch part 0.
+Mesh test_mesh() {
+  Mesh mesh = test::box_mesh({2, 2, 6}, {1.0, 0.8, 1.8});
+  mesh.region_names = {"lower", "upper"};
+  mesh.tet_region.resize(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double z = 0.0;
+    for (int c = 0; c < 4; ++c)
+      z += 0.25 * mesh.nodes[static_cast<std::size_t>(mesh.tets[t][c])][2];
+    mesh.tet_region[t] = z < 0.6 ? 0 : 1;
+  }
+  return mesh;
+}
+
+/// every_condition with a stiffer, more permeable upper region.
+Config two_region_condition() {
+  Config cfg = test::every_condition();
+  RegionConfig upper{"upper", cfg.material};
+  upper.material.set("mu", 2.0);
+  upper.material.set("permeability", 4e-2);
+  cfg.regions = {upper};
+  return cfg;
+}
 
 void add_volume_loads(BiphasicProblem& problem) {
   problem.set_body_force(
@@ -104,13 +127,18 @@ class SubdomainAssembly : public ::testing::TestWithParam<int> {
  protected:
   void SetUp() override {
     mesh_ = test_mesh();
-    config_ = test::every_condition();
+    const int parts = GetParam();
+    const MeshPartition partition = partition_mesh(mesh_, parts);
+    // With several parts, the upper region is part 0's elements: every part then holds one
+    // region only, and its scales (the stiffest material's) must still be the whole mesh's.
+    if (parts > 1)
+      for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
+        mesh_.tet_region[e] = partition.tet_part[e] == 0 ? 1 : 0;
+    config_ = two_region_condition();
     whole_ = std::make_unique<BiphasicProblem>(mesh_, config_);
     add_volume_loads(*whole_);
     test::random_state(*whole_, kTime, 11, y_, ydot_);
 
-    const int parts = GetParam();
-    const MeshPartition partition = partition_mesh(mesh_, parts);
     numbering_ = number_unknowns(mesh_, partition);
     map_ = serial_to_partitioned(mesh_, numbering_);
     const std::size_t n = y_.size();
