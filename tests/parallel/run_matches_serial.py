@@ -3,7 +3,8 @@
 
 The line probe (every row, u and p) and the reactions (every output) must agree to 1e-8 of
 their largest value, with the same Newton iterations step by step; the summary must record
-the processes and their partition. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
+the processes and their partition; a case refused on several processes must end every process
+with exit status 1 and one message. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
 """
 import csv
 import json
@@ -66,6 +67,13 @@ def main():
             failures.append("summary: status or process count wrong")
         if sum(p["parallel"]["owned_elements"]) != p["mesh"]["tetrahedra"]:
             failures.append("summary: owned elements do not add up to the mesh")
+        # Input refused before any work: exit status 1, the message printed once (process 0).
+        refused = subprocess.run([mpiexec, "--oversubscribe", "-n", processes, biphasic, "run",
+                                  case, "-o", os.path.join(tmp, "refused"), "--set",
+                                  'time.integrator="bdf"'], capture_output=True, text=True)
+        said = (refused.stdout + refused.stderr).count("error: time.integrator")
+        if refused.returncode != 1 or said != 1:
+            failures.append(f"a refused case: exit {refused.returncode}, message printed {said} times")
         for f in failures:
             print("FAIL:", f)
         return 1 if failures else 0
