@@ -121,9 +121,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     mesh = build_mesh(config, out_dir.string());
     mesh_seconds = seconds_since(t0);
   });
-  auto record_failure = [&](const std::string& message) {
+  auto record_failure = [&](const char* status, const std::string& message) {
     if (!root) return;
-    summary["status"] = "failed";
+    summary["status"] = status;
     summary["error"] = message;
     try {
       write_json(summary_path, summary);
@@ -173,7 +173,13 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     std::unique_ptr<FieldWriter> fields;
     run_collectively(comm, [&] {
       if (!root) return;
-      probes = std::make_unique<ProbeRecorder>(build_probes(config, mesh), constrained_all,
+      std::vector<Probe> lines;
+      try {
+        lines = build_probes(config, mesh);
+      } catch (const CaseError& e) {  // a probe outside the body: bad input (exit status 1)
+        throw std::invalid_argument(e.what());
+      }
+      probes = std::make_unique<ProbeRecorder>(std::move(lines), constrained_all,
                                                3 * mesh.num_nodes(), out_dir.string());
       probes->describe(summary);
       if (!config.output.reactions.empty())
@@ -358,8 +364,11 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         << summary["timings"]["wall"].get<double>() << " s; output in " << out_dir.string();
       say(s.str());
     }
+  } catch (const std::invalid_argument& e) {
+    record_failure("invalid", e.what());  // input found bad after the folder was made
+    throw;
   } catch (const std::exception& e) {
-    record_failure(e.what());
+    record_failure("failed", e.what());
     throw;
   }
   return summary;
