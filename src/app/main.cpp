@@ -83,6 +83,11 @@ void hand_over_to_mpi_program(char** argv) {
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   std::string program = ec ? std::string() : (self.parent_path() / "biphasic_mpi").string();
   if (program.empty() || !std::filesystem::exists(program)) program = BIPHASIC_MPI_PROGRAM;
+  // One thread per process unless the user says otherwise: mpirun starts a process per core,
+  // and OpenMP or OpenBLAS threads on top of them would oversubscribe the cores. (Set before
+  // the exec: OpenBLAS reads its variable when it is loaded.)
+  setenv("OMP_NUM_THREADS", "1", 0);
+  setenv("OPENBLAS_NUM_THREADS", "1", 0);
   argv[0] = program.data();
   execv(program.c_str(), argv);
   std::cerr << "error: biphasic was started by mpirun with " << mpi_world_size()

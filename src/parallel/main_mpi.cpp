@@ -4,6 +4,7 @@
 // options (e.g. -biphasic_mat_mumps_icntl_14 40) may follow on the same command line.
 #include <petscsys.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -42,7 +43,13 @@ int run(const std::vector<std::string>& args, int rank) {
 
 }  // namespace
 
+// OpenBLAS's own thread control, if OpenBLAS is the BLAS loaded (weak: absent otherwise).
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+
 int main(int argc, char** argv) {
+  // One thread per process unless the user says otherwise (mpirun starts a process per core).
+  setenv("OMP_NUM_THREADS", "1", 0);
+  if (!std::getenv("OPENBLAS_NUM_THREADS") && openblas_set_num_threads) openblas_set_num_threads(1);
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 2;
   int rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
