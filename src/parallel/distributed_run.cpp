@@ -24,6 +24,7 @@
 #include "biphasic/parallel/mesh_broadcast.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/time/backward_euler.hpp"
+#include "biphasic/time/bdf_integrator.hpp"
 
 namespace biphasic {
 
@@ -52,9 +53,6 @@ void check_supported(const Config& config, const RunOptions& options) {
   if (is_two_dimensional(config.model))
     throw std::invalid_argument("model = \"" + to_string(config.model) +
                                 "\": the two-dimensional models run on one process only");
-  if (config.time.integrator != Integrator::BackwardEuler)
-    throw std::invalid_argument(
-        "time.integrator: only \"backward_euler\" runs on several processes so far");
   if (config.linear_solver.type != LinearSolverType::Mumps &&
       config.linear_solver.type != LinearSolverType::Iterative)
     throw std::invalid_argument(
@@ -136,10 +134,16 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     const auto setup0 = Clock::now();
     DistributedAssembly assembly(mesh, config, comm);
     DistributedSystem system(assembly);
-    std::unique_ptr<BackwardEuler> integrator;
+    std::unique_ptr<TimeIntegrator> integrator;
     run_collectively(comm, [&] {
-      integrator = std::make_unique<BackwardEuler>(system, config.time, config.linear_solver);
+      // IDA's shift-corrected solver is a one-process method (it keeps dF/dẏ in the CSC layout).
+      TimeConfig time = config.time;
+      time.bdf.shift_correction = false;
+      integrator = make_time_integrator(system, time, config.linear_solver,
+                                        root ? out_dir.string() : std::string());
     });
+    if (root) integrator->set_log(say);
+    integrator->set_progress_interval(options.progress_interval);
     const PartitionedNumbering& numbering = assembly.numbering();
     const Index n_global = numbering.size();
 
@@ -346,11 +350,18 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                                         {"residual_u", info.residual_u},
                                         {"residual_p", info.residual_p}});
           char line[256];
-          std::snprintf(line, sizeof line,
-                        "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
-                        "|R_p| %.2e mm3/s",
-                        info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
-                        info.residual_u, info.residual_p);
+          if (uses_ida(config.time.integrator))
+            std::snprintf(line, sizeof line,
+                          "output %4d/%d  t %9.4g s  steps %4d  order %d  h %8.3g s  newton %3d  "
+                          "|R_u| %.2e N  |R_p| %.2e mm3/s",
+                          info.step, planned, info.t, info.internal_steps, info.order, info.dt,
+                          info.newton_iterations, info.residual_u, info.residual_p);
+          else
+            std::snprintf(line, sizeof line,
+                          "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
+                          "|R_p| %.2e mm3/s",
+                          info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
+                          info.residual_u, info.residual_p);
           say(line + mid);
         });
     VecDestroy(&owned_view);

@@ -3,9 +3,11 @@
 #include <nvector/nvector_parallel.h>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <stdexcept>
 
+#include "biphasic/parallel/collective_failure.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
 
@@ -28,7 +30,124 @@ class Placed {
   Vec v_;
 };
 
+/// The consistent start's matrices on several processes: each process builds its entries
+/// from its own part's dF/dy and dF/dẏ (local CSC arrays), PETSc sums them through the COO
+/// interface, and the parallel MUMPS factorises.
+class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
+ public:
+  DistributedEntrywiseMatrices(DistributedSystem& system, DistributedAssembly& assembly)
+      : system_(system), assembly_(assembly) {
+    BiphasicProblem& local = assembly.local_problem();
+    const SparsityPattern& pattern = local.pattern();
+    a0_.resize(static_cast<std::size_t>(pattern.nnz()));
+    r_.resize(a0_.size());
+    // Local row and column of every pattern position.
+    column_of_.resize(a0_.size());
+    for (Index j = 0; j < pattern.size(); ++j)
+      for (Index q = pattern.colptr()[static_cast<std::size_t>(j)];
+           q < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++q)
+        column_of_[static_cast<std::size_t>(q)] = j;
+    values_.resize(assembly.dofs().entries().size());
+    if (SUNContext_Create(nullptr, &ctx_) != 0)
+      throw std::runtime_error("SUNContext_Create failed");
+    petsc_check(VecCreateMPIWithArray(assembly.comm(), 1, static_cast<PetscInt>(system.size()),
+                                      static_cast<PetscInt>(assembly.global_size()), nullptr, &x_),
+                "VecCreateMPIWithArray");
+    petsc_check(VecCreateMPI(assembly.comm(), static_cast<PetscInt>(system.size()),
+                             static_cast<PetscInt>(assembly.global_size()), &product_),
+                "VecCreateMPI");
+  }
+  ~DistributedEntrywiseMatrices() override {
+    ls_.reset();
+    for (SUNMatrix& m : slots_)
+      if (m) SUNMatDestroy(m);
+    for (N_Vector v : {nx_, nb_})
+      if (v) N_VDestroy(v);
+    for (Vec* v : {&x_, &product_})
+      if (*v) VecDestroy(v);
+    SUNContext_Free(&ctx_);
+  }
+
+  void evaluate(double t, const double* y, const double* ydot) override {
+    std::vector<double> yl, ydl;
+    {
+      Placed yv(x_, y);
+      assembly_.to_local(yv, yl);
+    }
+    {
+      Placed ydv(x_, ydot);
+      assembly_.to_local(ydv, ydl);
+    }
+    run_collectively(assembly_.comm(), [&] {
+      assembly_.local_problem().jacobian(t, yl.data(), ydl.data(), 0.0, a0_.data(), r_.data());
+    });
+  }
+  double a0_diagonal(Index i) const override {
+    const Index l = assembly_.dofs().owned()[static_cast<std::size_t>(i)];
+    return a0_[static_cast<std::size_t>(assembly_.local_problem().pattern().find(l, l))];
+  }
+  void build(int slot, const Rule& rule) override {
+    SUNMatrix& m = slots_.at(static_cast<std::size_t>(slot));
+    if (!m) m = system_.new_jacobian_matrix(ctx_);
+    BiphasicProblem& local = assembly_.local_problem();
+    const Index nu = local.num_u();
+    const std::vector<char>& fixed = local.constrained();
+    const auto& rows = local.pattern().rowind();
+    const auto& entries = assembly_.dofs().entries();
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      const auto q = static_cast<std::size_t>(entries[k].position);
+      const Index i = rows[q], j = column_of_[q];
+      values_[k] = rule(i < nu, j < nu, fixed[static_cast<std::size_t>(i)] != 0, a0_[q], r_[q]);
+    }
+    petsc_check(MatSetValuesCOO(petsc_matrix(m), values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+  }
+  void residual(int slot, const double* b, const double* x, double* r) const override {
+    Placed xv(x_, x);
+    petsc_check(MatMult(petsc_matrix(slots_.at(static_cast<std::size_t>(slot))), xv, product_),
+                "MatMult");
+    const PetscScalar* p = nullptr;
+    petsc_check(VecGetArrayRead(product_, &p), "VecGetArrayRead");
+    for (Index i = 0; i < system_.size(); ++i) r[i] = b[i] - p[i];
+    VecRestoreArrayRead(product_, &p);
+  }
+  void factorise(int slot, const LinearSolverConfig&, LinearSolverStats* stats) override {
+    // Double-precision LU whatever the configured solver, as in one process.
+    ls_ = make_petsc_direct_solver(assembly_.comm(), ctx_, stats ? stats : &own_stats_);
+    factorised_ = slots_.at(static_cast<std::size_t>(slot));
+    nx_ = system_.new_vector(ctx_);
+    nb_ = system_.new_vector(ctx_);
+    const int flag = SUNLinSolSetup(ls_.get(), factorised_);
+    if (flag != 0)
+      throw std::runtime_error("the consistent start's regularised system could not be factorised");
+  }
+  void solve(const double* b, double* x) override {
+    std::copy_n(b, system_.size(), N_VGetArrayPointer(nb_));
+    if (SUNLinSolSolve(ls_.get(), factorised_, nx_, nb_, 0.0) != 0)
+      throw std::runtime_error("the consistent start's regularised system could not be solved");
+    std::copy_n(N_VGetArrayPointer(nx_), system_.size(), x);
+  }
+
+ private:
+  DistributedSystem& system_;
+  DistributedAssembly& assembly_;
+  std::vector<double> a0_, r_;
+  std::vector<Index> column_of_;
+  std::vector<PetscScalar> values_;
+  std::array<SUNMatrix, 3> slots_{};
+  SUNMatrix factorised_ = nullptr;
+  SUNContext ctx_ = nullptr;
+  LinearSolverPtr ls_;
+  LinearSolverStats own_stats_;
+  N_Vector nx_ = nullptr, nb_ = nullptr;
+  Vec x_ = nullptr;        ///< storage-less, over a caller's owned array
+  Vec product_ = nullptr;  ///< M x
+};
+
 }  // namespace
+
+std::unique_ptr<EntrywiseMatrices> DistributedSystem::entrywise_matrices() {
+  return std::make_unique<DistributedEntrywiseMatrices>(*this, assembly_);
+}
 
 DistributedSystem::DistributedSystem(DistributedAssembly& assembly) : assembly_(assembly) {
   int rank = 0;

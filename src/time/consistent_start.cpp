@@ -1,8 +1,5 @@
 #include "biphasic/time/consistent_start.hpp"
 
-#include <nvector/nvector_serial.h>
-#include <sunmatrix/sunmatrix_sparse.h>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -31,86 +28,11 @@ constexpr double kRegularisation = 1e-6;
 /// stops falling.
 constexpr int kMaxCorrections = 12;
 
-/// r = b − M x for a CSC matrix M in the pattern.
-void residual_of(const SparsityPattern& pat, const std::vector<double>& M,
-                 const std::vector<double>& b, const std::vector<double>& x,
-                 std::vector<double>& r) {
-  r = b;
-  const auto& cp = pat.colptr();
-  const auto& ri = pat.rowind();
-  const Index n = pat.size();
-  for (Index j = 0; j < n; ++j)
-    for (Index q = cp[j]; q < cp[j + 1]; ++q) r[ri[q]] -= M[q] * x[j];
-}
-
 double max_abs(const std::vector<double>& v) {
   double m = 0.0;
   for (double x : v) m = std::max(m, std::abs(x));
   return m;
 }
-
-/// One factorisation of the regularised matrix, solves with it.
-class RegularisedSystem {
- public:
-  RegularisedSystem(const SemidiscreteSystem& problem, const std::vector<double>& values,
-                    const LinearSolverConfig& solver, LinearSolverStats* stats) {
-    if (SUNContext_Create(nullptr, &ctx_) != 0)
-      throw std::runtime_error("SUNContext_Create failed");
-    const SparsityPattern& pat = problem.pattern();
-    M_ = pat.new_matrix(ctx_);
-    std::copy(values.begin(), values.end(), SUNSparseMatrix_Data(M_));
-    const SaddlePointStructure saddle = problem.saddle_point_structure([] {
-      return std::pair{1.0, 0.0};
-    });
-    // A few solves with no Newton iteration after them: double-precision factors. The
-    // regularised matrix is GLS-dominated (a step of ε ≪ the GLS time), where the iterative
-    // solver's multigrid fails: a direct factorisation then, once per start.
-    LinearSolverConfig exact = solver;
-    exact.precision = FactorPrecision::Double;
-    if (exact.type == LinearSolverType::Iterative) {
-      exact.type = LinearSolverType::Mumps;
-      exact.ordering = Ordering::Metis;
-    }
-    ls_ = make_linear_solver(exact, ctx_, stats ? stats : &own_stats_, fill_order(exact, pat),
-                             &saddle);
-    const Index n = problem.size();
-    x_ = N_VNew_Serial(n, ctx_);
-    b_ = N_VNew_Serial(n, ctx_);
-    const int flag = SUNLinSolSetup(ls_.get(), M_);
-    if (flag != 0) {
-      const LinearSolverStats& st = stats ? *stats : own_stats_;
-      throw std::runtime_error("the consistent start's regularised system could not be " +
-                               std::string("factorised: ") + linear_solver_flag_message(flag) +
-                               (st.last_error.empty() ? "" : ": " + st.last_error));
-    }
-  }
-  ~RegularisedSystem() {
-    N_VDestroy(x_);
-    N_VDestroy(b_);
-    ls_.reset();
-    SUNMatDestroy(M_);
-    SUNContext_Free(&ctx_);
-  }
-  RegularisedSystem(const RegularisedSystem&) = delete;
-  RegularisedSystem& operator=(const RegularisedSystem&) = delete;
-
-  std::vector<double> solve(const std::vector<double>& rhs) {
-    std::copy(rhs.begin(), rhs.end(), N_VGetArrayPointer(b_));
-    const int flag = SUNLinSolSolve(ls_.get(), M_, x_, b_, 0.0);
-    if (flag != 0)
-      throw std::runtime_error("the consistent start's regularised system could not be solved: " +
-                               linear_solver_flag_message(flag));
-    const double* x = N_VGetArrayPointer(x_);
-    return {x, x + rhs.size()};
-  }
-
- private:
-  SUNContext ctx_ = nullptr;
-  SUNMatrix M_ = nullptr;
-  LinearSolverStats own_stats_;
-  LinearSolverPtr ls_;
-  N_Vector x_ = nullptr, b_ = nullptr;
-};
 
 }  // namespace
 
@@ -138,7 +60,6 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
   correction.clear();
   const Index n = problem.size();
   const Index nu = problem.num_u();
-  const SparsityPattern& pat = problem.pattern();
   const std::vector<char>& fixed = problem.constrained();
   const bool gls = problem.has_gls();
   ConsistentState out;
@@ -151,38 +72,33 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
   // F(base) + ∂F/∂u̇ u̇ + ∂F/∂p p (F is affine in u̇ and p at fixed u).
   std::vector<double> base = y;
   if (p_value) std::fill(base.begin() + nu, base.end(), 0.0);
-  std::vector<double> zero(n, 0.0), F0(n), dFdt(n), A0(pat.nnz()), R(pat.nnz()), g(n), gdot(n);
-  problem.jacobian(t, base.data(), zero.data(), 0.0, A0.data(), R.data());
+  std::vector<double> zero(n, 0.0), F0(n), dFdt(n), g(n), gdot(n);
+  const std::unique_ptr<EntrywiseMatrices> matrices = problem.entrywise_matrices();
+  matrices->evaluate(t, base.data(), zero.data());
   problem.residual(t, base.data(), zero.data(), F0.data());
   problem.time_derivative(t, dFdt.data());
   problem.apply_dirichlet(t, g.data(), gdot.data());
 
-  // M = M₀ + ε·(regulariser), columns z = (u̇, p or ṗ).
-  std::vector<double> M(pat.nnz()), M0(pat.nnz());
-  const auto& cp = pat.colptr();
-  const auto& ri = pat.rowind();
-  for (Index j = 0; j < n; ++j)
-    for (Index q = cp[j]; q < cp[j + 1]; ++q) {
-      const Index i = ri[q];
-      const bool u_row = i < nu, u_col = j < nu;
-      if (fixed[i]) {
-        M0[q] = M[q] = A0[q];
-      } else if (u_row && u_col) {
-        M0[q] = R[q];  // GLS: ∂F_u/∂u̇
-        M[q] = R[q] + eps * A0[q];
-      } else if (u_row) {
-        M0[q] = p_value ? A0[q] : 0.0;  // ∂F_u/∂p
-        M[q] = p_value ? A0[q] : eps * A0[q];
-      } else if (u_col) {
-        M0[q] = M[q] = R[q];  // ∂F_p/∂u̇
-      } else {
-        M0[q] = M[q] = p_value ? A0[q] : R[q];  // Darcy ∂F_p/∂p, or flux perturbation ∂F_p/∂ṗ
-      }
-    }
+  // M = M₀ + ε·(regulariser) (slot 0) and M₀ (slot 1), columns z = (u̇, p or ṗ).
+  constexpr int kM = 0, kM0 = 1, kA0u = 2;
+  matrices->build(kM, [&](bool u_row, bool u_col, bool fixed_row, double a0, double r) {
+    if (fixed_row) return a0;
+    if (u_row && u_col) return r + eps * a0;    // GLS: ∂F_u/∂u̇, regularised
+    if (u_row) return p_value ? a0 : eps * a0;  // ∂F_u/∂p
+    if (u_col) return r;                        // ∂F_p/∂u̇
+    return p_value ? a0 : r;  // Darcy ∂F_p/∂p, or flux perturbation ∂F_p/∂ṗ
+  });
+  matrices->build(kM0, [&](bool u_row, bool u_col, bool fixed_row, double a0, double r) {
+    if (fixed_row) return a0;
+    if (u_row && u_col) return r;
+    if (u_row) return p_value ? a0 : 0.0;
+    if (u_col) return r;
+    return p_value ? a0 : r;
+  });
   std::vector<double> b0(n), b(n);
   for (Index i = 0; i < n; ++i) {
     if (fixed[i]) {
-      const double s = A0[pat.find(i, i)];
+      const double s = matrices->a0_diagonal(i);
       b0[i] = b[i] = s * (p_value && i >= nu ? g[i] : gdot[i]);
     } else if (i < nu) {
       b0[i] = gls ? -F0[i] : 0.0;
@@ -192,17 +108,17 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
     }
   }
 
-  std::vector<double> z, r;
+  std::vector<double> z(n), r(n), dz(n);
   try {
-    RegularisedSystem system(problem, M, solver, stats);
-    z = system.solve(b);
+    matrices->factorise(kM, solver, stats);
+    matrices->solve(b.data(), z.data());
     // Refinement on the exact equations M₀ z = b₀: leaves the rates M₀ does not determine where
     // the regularised solve put them, and drives the residual to round-off.
     const double target = 1e-14 * std::max(max_abs(b0), max_abs(b));
     for (int k = 0; k < 4; ++k) {
-      residual_of(pat, M0, b0, z, r);
+      matrices->residual(kM0, b0.data(), z.data(), r.data());
       if (max_abs(r) <= target) break;
-      const std::vector<double> dz = system.solve(r);
+      matrices->solve(r.data(), dz.data());
       for (Index i = 0; i < n; ++i) z[i] += dz[i];
     }
     out.y = y;
@@ -212,15 +128,17 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
       // ṗ₀ from the differentiated system, whose matrix is M₀ again (columns ü, ṗ):
       // ∂F/∂u̇ ü + ∂F/∂p ṗ = −∂F/∂t − ∂F/∂u u̇₀ at (y₀, u̇₀).
       std::fill(out.ydot.begin() + nu, out.ydot.end(), 0.0);
-      problem.jacobian(t, out.y.data(), out.ydot.data(), 0.0, A0.data());
-      std::vector<double> rhs(n);
-      for (Index i = 0; i < n; ++i) rhs[i] = fixed[i] ? 0.0 : -dFdt[i];
-      for (Index j = 0; j < nu; ++j)
-        for (Index q = cp[j]; q < cp[j + 1]; ++q)
-          if (!fixed[ri[q]]) rhs[ri[q]] -= A0[q] * out.ydot[j];
+      matrices->evaluate(t, out.y.data(), out.ydot.data());
+      matrices->build(kA0u, [](bool, bool u_col, bool fixed_row, double a0, double) {
+        return u_col && !fixed_row ? a0 : 0.0;
+      });
+      std::vector<double> start(n), rhs(n);
+      for (Index i = 0; i < n; ++i) start[i] = fixed[i] ? 0.0 : -dFdt[i];
+      matrices->residual(kA0u, start.data(), out.ydot.data(), rhs.data());
       for (Index i = nu; i < n; ++i)
-        if (fixed[i]) rhs[i] = A0[pat.find(i, i)] * gdot[i];
-      const std::vector<double> w = system.solve(rhs);
+        if (fixed[i]) rhs[i] = matrices->a0_diagonal(i) * gdot[i];
+      std::vector<double> w(n);
+      matrices->solve(rhs.data(), w.data());
       std::copy(w.begin() + nu, w.end(), out.ydot.begin() + nu);
     }
     // Dirichlet rows exactly (and unknowns tied to a rigid platen equal to its master's).
@@ -231,10 +149,10 @@ ConsistentState consistent_pass(SemidiscreteSystem& problem, double t, const std
     // With the flux perturbation p is differential and u wholly algebraic: this matrix's
     // correction would move p as well, so the state is left as given there.
     if (out.residual_u > tolerance && !problem.has_flux_perturbation()) {
-      std::vector<double> rhs(n, 0.0);
+      std::vector<double> rhs(n, 0.0), w(n);
       for (Index i = 0; i < nu; ++i)
         if (!fixed[i]) rhs[i] = -eps * F[i];
-      const std::vector<double> w = system.solve(rhs);
+      matrices->solve(rhs.data(), w.data());
       correction.assign(n, 0.0);
       for (Index i = 0; i < n; ++i)
         if (!fixed[i]) correction[i] = i < nu || p_value ? w[i] : eps * w[i];

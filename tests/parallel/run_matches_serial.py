@@ -3,8 +3,8 @@
 
 The line probe (every row, u and p) and the reactions (every output) must agree to 1e-8 of
 their largest value, with the same Newton iterations step by step; the summary must record
-the processes and their partition; a case refused on several processes must end every process
-with exit status 1 and one message. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
+the processes and their partition; a case refused on several processes (KLU) must end every
+process with exit status 1 and one message. Extra arguments (--set ...) go to both runs. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
 """
 import csv
 import json
@@ -70,8 +70,8 @@ def main():
         # Input refused before any work: exit status 1, the message printed once (process 0).
         refused = subprocess.run([mpiexec, "--oversubscribe", "-n", processes, biphasic, "run",
                                   case, "-o", os.path.join(tmp, "refused"), "--set",
-                                  'time.integrator="bdf"'], capture_output=True, text=True)
-        said = (refused.stdout + refused.stderr).count("error: time.integrator")
+                                  'linear_solver.type="klu"'], capture_output=True, text=True)
+        said = (refused.stdout + refused.stderr).count("error: linear_solver.type")
         if refused.returncode != 1 or said != 1:
             failures.append(f"a refused case: exit {refused.returncode}, message printed {said} times")
         for f in failures:

@@ -49,6 +49,9 @@ class DistributedSystem final : public SemidiscreteSystem {
                                     LinearSolverStats* stats,
                                     const SaddlePointStructure* saddle) const override;
 
+  /// The consistent start's matrices as PETSc matrices, factorised by the parallel MUMPS.
+  std::unique_ptr<EntrywiseMatrices> entrywise_matrices() override;
+
   /// Over the free owned rows of every process.
   std::pair<double, double> field_norms(const double* F) const override;
   std::pair<double, double> solution_scales() const override;

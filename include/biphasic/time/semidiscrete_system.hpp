@@ -13,12 +13,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "biphasic/assembly/sparsity.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/time/entrywise_matrices.hpp"
 
 namespace biphasic {
 
@@ -87,6 +89,9 @@ class SemidiscreteSystem {
   virtual LinearSolverPtr new_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
                                             LinearSolverStats* stats,
                                             const SaddlePointStructure* saddle) const;
+
+  /// The consistent start's matrices (time/entrywise_matrices.hpp) in this system's layout.
+  virtual std::unique_ptr<EntrywiseMatrices> entrywise_matrices();
 
   // ---- scales for tolerances and messages ----------------------------------------------------
   /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].
