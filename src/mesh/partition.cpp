@@ -61,17 +61,33 @@ MeshPartition partition_mesh(const Mesh& mesh, int parts) {
                                  " tetrahedra into " + std::to_string(parts) + " parts left part " +
                                  std::to_string(r) + " empty; use fewer processes");
   }
-  p.node_owner.assign(mesh.nodes.size(), parts);
+  assign_node_owners(mesh, p);
+  return p;
+}
+
+void assign_node_owners(const Mesh& mesh, MeshPartition& partition) {
+  const int parts = partition.parts;
+  partition.node_owner.assign(mesh.nodes.size(), parts);
   for (std::size_t e = 0; e < mesh.tets.size(); ++e)
     for (Index n : mesh.tets[e]) {
-      int& owner = p.node_owner[static_cast<std::size_t>(n)];
-      owner = std::min(owner, p.tet_part[e]);
+      int& owner = partition.node_owner[static_cast<std::size_t>(n)];
+      owner = std::min(owner, partition.tet_part[e]);
     }
-  for (std::size_t n = 0; n < p.node_owner.size(); ++n)
-    if (p.node_owner[n] == parts)
+  for (std::size_t n = 0; n < partition.node_owner.size(); ++n)
+    if (partition.node_owner[n] == parts)
       throw std::runtime_error("partition: node " + std::to_string(n) +
                                " belongs to no tetrahedron");
-  return p;
+}
+
+std::vector<Index> rank_major_of_whole(const Mesh& mesh, const PartitionedNumbering& numbering) {
+  std::vector<Index> map(static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices));
+  for (Index n = 0; n < mesh.num_nodes(); ++n)
+    for (int c = 0; c < 3; ++c)
+      map[static_cast<std::size_t>(3 * n + c)] = numbering.u_base[static_cast<std::size_t>(n)] + c;
+  for (Index v = 0; v < mesh.num_vertices; ++v)
+    map[static_cast<std::size_t>(3 * mesh.num_nodes() + v)] =
+        numbering.p_index[static_cast<std::size_t>(v)];
+  return map;
 }
 
 PartitionedNumbering number_unknowns(const Mesh& mesh, const MeshPartition& partition) {

@@ -49,12 +49,7 @@ MeshPartition shared_partition(const Mesh& mesh, MPI_Comm comm) {
   p.parts = size;
   p.tet_part.resize(mesh.tets.size());
   MPI_Bcast(p.tet_part.data(), static_cast<int>(p.tet_part.size()), MPI_INT, 0, comm);
-  p.node_owner.assign(mesh.nodes.size(), size);
-  for (std::size_t e = 0; e < mesh.tets.size(); ++e)
-    for (Index n : mesh.tets[e]) {
-      int& owner = p.node_owner[static_cast<std::size_t>(n)];
-      owner = std::min(owner, p.tet_part[e]);
-    }
+  assign_node_owners(mesh, p);
   return p;
 }
 

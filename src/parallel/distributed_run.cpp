@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -15,6 +14,7 @@
 
 #include "biphasic/app/field_output.hpp"
 #include "biphasic/app/probes.hpp"
+#include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/output_folder.hpp"
@@ -37,15 +37,9 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+/// Replaces the file by the JSON text, checked (io/atomic_file.hpp).
 void write_json(const fs::path& path, const nlohmann::json& j) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    out.flush();
-    if (!out) throw std::runtime_error("could not write " + tmp.string());
-  }
-  fs::rename(tmp, path);
+  write_file_atomically(path.string(), j.dump(2) + '\n');
 }
 
 /// Refuses, before any work, what does not run on several processes yet.
@@ -154,23 +148,18 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       counts[ri] = static_cast<int>(numbering.offset[ri + 1] - numbering.offset[ri]);
       displs[ri] = static_cast<int>(numbering.offset[ri]);
     }
+    // Unknown i of the one-process layout is rank-major unknown whole_to_rank_major[i].
+    const std::vector<Index> whole_to_rank_major =
+        root ? rank_major_of_whole(mesh, numbering) : std::vector<Index>();
     // The Dirichlet flags of the whole system in the one-process layout (the probe line's
     // drained ends).
-    std::vector<char> constrained_all(root ? static_cast<std::size_t>(n_global) : 0);
+    std::vector<char> constrained_all(whole_to_rank_major.size());
     {
       std::vector<char> flags(root ? static_cast<std::size_t>(n_global) : 0);
       MPI_Gatherv(system.constrained().data(), static_cast<int>(system.size()), MPI_CHAR,
                   flags.data(), counts.data(), displs.data(), MPI_CHAR, 0, comm);
-      if (root)
-        for (Index node = 0; node < mesh.num_nodes(); ++node) {
-          const auto nd = static_cast<std::size_t>(node);
-          for (int c = 0; c < 3; ++c)
-            constrained_all[static_cast<std::size_t>(3 * node + c)] =
-                flags[static_cast<std::size_t>(numbering.u_base[nd] + c)];
-          if (node < mesh.num_vertices)
-            constrained_all[static_cast<std::size_t>(3 * mesh.num_nodes() + node)] =
-                flags[static_cast<std::size_t>(numbering.p_index[nd])];
-        }
+      for (std::size_t i = 0; i < whole_to_rank_major.size(); ++i)
+        constrained_all[i] = flags[static_cast<std::size_t>(whole_to_rank_major[i])];
     }
     std::unique_ptr<ProbeRecorder> probes;
     std::unique_ptr<ReactionCsv> reaction_csv;
@@ -223,16 +212,12 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, partitioned.data(),
                   counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
       if (!root) return;
-      u.assign(static_cast<std::size_t>(3 * mesh.num_nodes()), 0.0);
-      p.assign(static_cast<std::size_t>(mesh.num_vertices), 0.0);
-      for (Index node = 0; node < mesh.num_nodes(); ++node) {
-        for (int c = 0; c < 3; ++c)
-          u[static_cast<std::size_t>(3 * node + c)] = partitioned[static_cast<std::size_t>(
-              numbering.u_base[static_cast<std::size_t>(node)] + c)];
-        if (node < mesh.num_vertices)
-          p[static_cast<std::size_t>(node)] = partitioned[static_cast<std::size_t>(
-              numbering.p_index[static_cast<std::size_t>(node)])];
-      }
+      const auto num_u = static_cast<std::size_t>(3 * mesh.num_nodes());
+      u.resize(num_u);
+      p.resize(whole_to_rank_major.size() - num_u);
+      for (std::size_t i = 0; i < whole_to_rank_major.size(); ++i)
+        (i < num_u ? u[i] : p[i - num_u]) =
+            partitioned[static_cast<std::size_t>(whole_to_rank_major[i])];
     };
     // Reactions: each process's share from its own elements, summed on process 0.
     Vec owned_view = nullptr;

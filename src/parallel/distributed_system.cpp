@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "../physics/boundary_data.hpp"
 #include "biphasic/parallel/collective_failure.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
@@ -249,12 +250,8 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
 }
 
 std::pair<double, double> DistributedSystem::field_norms(const double* F) const {
-  double local[2] = {0.0, 0.0};
-  for (Index i = 0; i < size(); ++i) {
-    if (constrained_[static_cast<std::size_t>(i)]) continue;
-    double& r = i < num_u_ ? local[0] : local[1];
-    r = std::max(r, std::abs(F[i]));
-  }
+  const auto [ru, rp] = detail::free_row_norms(F, constrained_, num_u_);
+  double local[2] = {ru, rp};
   double global[2] = {0.0, 0.0};
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, assembly_.comm());
   return {global[0], global[1]};

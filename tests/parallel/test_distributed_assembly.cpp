@@ -27,14 +27,10 @@ class DistributedAssemblyTest : public ::testing::Test {
     dist_ = std::make_unique<DistributedAssembly>(mesh_, config_, PETSC_COMM_WORLD);
     // Serial unknown of each rank-major unknown.
     const PartitionedNumbering& num = dist_->numbering();
+    const std::vector<Index> rank_major = rank_major_of_whole(mesh_, num);
     serial_of_.assign(static_cast<std::size_t>(num.size()), -1);
-    for (Index n = 0; n < mesh_.num_nodes(); ++n)
-      for (int c = 0; c < 3; ++c)
-        serial_of_[static_cast<std::size_t>(num.u_base[static_cast<std::size_t>(n)] + c)] =
-            3 * n + c;
-    for (Index v = 0; v < mesh_.num_vertices; ++v)
-      serial_of_[static_cast<std::size_t>(num.p_index[static_cast<std::size_t>(v)])] =
-          3 * mesh_.num_nodes() + v;
+    for (std::size_t i = 0; i < rank_major.size(); ++i)
+      serial_of_[static_cast<std::size_t>(rank_major[i])] = static_cast<Index>(i);
     // The same random state on every process, Dirichlet values set.
     test::random_state(*whole_, kTime, 3, y_, ydot_);
     y_vec_ = owned_copy(y_);

@@ -49,13 +49,10 @@ void expect_same_run(const Config& config, const LinearSolverConfig& solver, dou
 
   // Owned unknown k is rank-major unknown first_owned() + k.
   const PartitionedNumbering& num = assembly.numbering();
-  std::vector<Index> serial_of(static_cast<std::size_t>(num.size()));
-  for (Index n = 0; n < mesh.num_nodes(); ++n)
-    for (int c = 0; c < 3; ++c)
-      serial_of[static_cast<std::size_t>(num.u_base[static_cast<std::size_t>(n)] + c)] = 3 * n + c;
-  for (Index v = 0; v < mesh.num_vertices; ++v)
-    serial_of[static_cast<std::size_t>(num.p_index[static_cast<std::size_t>(v)])] =
-        3 * mesh.num_nodes() + v;
+  const std::vector<Index> rank_major = rank_major_of_whole(mesh, num);
+  std::vector<Index> serial_of(rank_major.size());
+  for (std::size_t i = 0; i < rank_major.size(); ++i)
+    serial_of[static_cast<std::size_t>(rank_major[i])] = static_cast<Index>(i);
   double u_max = 0.0, p_max = 0.0;
   for (Index i = 0; i < whole.size(); ++i)
     (i < whole.num_u() ? u_max : p_max) = std::max(i < whole.num_u() ? u_max : p_max,

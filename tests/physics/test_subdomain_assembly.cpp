@@ -53,18 +53,6 @@ void add_volume_loads(BiphasicProblem& problem) {
   problem.set_fluid_source([](const Vec3& X, double t) { return 1e-3 * (X(0) + t); });
 }
 
-/// Serial-layout unknown ↔ rank-major unknown.
-std::vector<Index> serial_to_partitioned(const Mesh& mesh, const PartitionedNumbering& num) {
-  std::vector<Index> map(static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices));
-  for (Index n = 0; n < mesh.num_nodes(); ++n)
-    for (int c = 0; c < 3; ++c)
-      map[static_cast<std::size_t>(3 * n + c)] = num.u_base[static_cast<std::size_t>(n)] + c;
-  for (Index v = 0; v < mesh.num_vertices; ++v)
-    map[static_cast<std::size_t>(3 * mesh.num_nodes() + v)] =
-        num.p_index[static_cast<std::size_t>(v)];
-  return map;
-}
-
 double max_abs(const std::vector<double>& v) {
   double m = 0.0;
   for (double x : v) m = std::max(m, std::abs(x));
@@ -96,7 +84,7 @@ TEST(Partition, CoversEveryElementOnceAndNumbersEveryUnknownOnce) {
     EXPECT_TRUE(std::all_of(owned_count.begin(), owned_count.end(), [](int c) { return c == 1; }));
     // The rank-major numbering is a bijection onto [0, N), each part one contiguous range.
     const PartitionedNumbering num = number_unknowns(mesh, p);
-    const std::vector<Index> map = serial_to_partitioned(mesh, num);
+    const std::vector<Index> map = rank_major_of_whole(mesh, num);
     EXPECT_EQ(num.size(), static_cast<Index>(map.size()));
     std::vector<Index> sorted = map;
     std::sort(sorted.begin(), sorted.end());
@@ -140,7 +128,7 @@ class SubdomainAssembly : public ::testing::TestWithParam<int> {
     test::random_state(*whole_, kTime, 11, y_, ydot_);
 
     numbering_ = number_unknowns(mesh_, partition);
-    map_ = serial_to_partitioned(mesh_, numbering_);
+    map_ = rank_major_of_whole(mesh_, numbering_);
     const std::size_t n = y_.size();
     std::vector<double> yp(n), ydotp(n);
     for (std::size_t i = 0; i < n; ++i) {

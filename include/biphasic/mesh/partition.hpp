@@ -27,6 +27,10 @@ struct MeshPartition {
   std::vector<int> node_owner;  ///< per node, the lowest part among the elements containing it
 };
 
+/// Sets `partition.node_owner` from its `tet_part`: each node's lowest part among the elements
+/// containing it. Throws std::runtime_error for a node in no tetrahedron.
+void assign_node_owners(const Mesh& mesh, MeshPartition& partition);
+
 /// Partitions the tetrahedra into `parts` parts with METIS_PartMeshDual (corners only, parts
 /// sharing faces; 1 part: every element in part 0). Throws std::invalid_argument if parts < 1
 /// or parts exceeds the number of tetrahedra, std::runtime_error if METIS fails.
@@ -45,6 +49,10 @@ struct PartitionedNumbering {
 /// The rank-major numbering of `partition` on `mesh` (3 displacement unknowns per node and one
 /// pressure per vertex).
 PartitionedNumbering number_unknowns(const Mesh& mesh, const MeshPartition& partition);
+
+/// For each unknown of the one-process layout (u of node n at 3n + c, then p of vertex v at
+/// 3 num_nodes + v), its unknown in the rank-major numbering.
+std::vector<Index> rank_major_of_whole(const Mesh& mesh, const PartitionedNumbering& numbering);
 
 /// One part's view of the mesh. Its mesh holds the part's own tetrahedra and every tetrahedron
 /// sharing a node with one of them (the ghost layer), so that each node an owned element
