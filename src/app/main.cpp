@@ -19,6 +19,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/io/size_guard.hpp"
+#include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/time/progress_meter.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
@@ -41,6 +42,8 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
   biphasic::RunOptions& options = parsed.options;
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   biphasic::check_size(config, case_path, biphasic::available_memory());
+  if (config.linear_solver.type == biphasic::LinearSolverType::SuperluDist && !validate_only)
+    throw std::invalid_argument(case_path + ": " + biphasic::kSuperluDistNeedsProcesses);
   if (validate_only) {
     // Builds the mesh: names, formulas, constraints and probe points are checked on it.
     const std::vector<std::string> notes = biphasic::check_case(config);

@@ -77,7 +77,8 @@ const Names<LinearSolverType>& linear_solver_names() {
   static const Names<LinearSolverType> names{{"klu", LinearSolverType::Klu},
                                              {"umfpack", LinearSolverType::Umfpack},
                                              {"mumps", LinearSolverType::Mumps},
-                                             {"iterative", LinearSolverType::Iterative}};
+                                             {"iterative", LinearSolverType::Iterative},
+                                             {"superlu_dist", LinearSolverType::SuperluDist}};
   return names;
 }
 
@@ -672,8 +673,9 @@ std::vector<Key<Config>> build_global_keys() {
   keys.push_back(choice_key<C>(
       "linear_solver.type", linear_solver_names(),
       "Linear solver: mumps and umfpack (multifrontal, BLAS-3; fast with OpenBLAS), klu (no "
-      "BLAS; suits small problems), or iterative (FGMRES with BoomerAMG on the displacement "
-      "block and a pressure Schur-complement approximation; for meshes too large to factorise).",
+      "BLAS; suits small problems), iterative (FGMRES with BoomerAMG on the displacement "
+      "block and a pressure Schur-complement approximation; for meshes too large to factorise), or "
+      "superlu_dist (SuperLU_DIST, under mpirun with several processes only).",
       [](auto& c) -> auto& { return c.linear_solver.type; }));
   keys.push_back(choice_key<C>(
       "linear_solver.ordering", ordering_names(),

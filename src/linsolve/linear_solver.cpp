@@ -11,7 +11,7 @@ void LinearSolverDeleter::operator()(_generic_SUNLinearSolver* s) const { SUNLin
 
 FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern) {
   if (config.ordering != Ordering::Metis || config.type == LinearSolverType::Umfpack ||
-      config.type == LinearSolverType::Iterative)
+      config.type == LinearSolverType::Iterative || config.type == LinearSolverType::SuperluDist)
     return {};
   const std::vector<Index> nodal = pattern.nested_dissection_order();
   return FillOrder(nodal.begin(), nodal.end());
@@ -31,6 +31,8 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
       if (!saddle)
         throw std::invalid_argument("the iterative linear solver needs the saddle-point structure");
       return make_iterative_solver(config.krylov, *saddle, ctx, stats);
+    case LinearSolverType::SuperluDist:
+      throw std::invalid_argument(kSuperluDistNeedsProcesses);
   }
   return nullptr;
 }

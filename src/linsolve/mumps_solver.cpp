@@ -12,27 +12,19 @@
 
 #include "biphasic/assembly/threads.hpp"
 #include "direct_solver.hpp"
+#include "mixed_precision.hpp"
+#include "mumps_steps.hpp"
 
 namespace biphasic {
 
 namespace {
 
-using detail::Clock;
-using detail::seconds_since;
+using detail::DoublePrecision;
+using detail::PrecisionBackoff;
+using detail::RefinementTarget;
+using detail::SinglePrecision;
 
 constexpr MUMPS_INT kUseCommWorld = -987654;
-
-/// MUMPS' C interface in double (d) and single (s) precision.
-struct DoublePrecision {
-  using Struc = DMUMPS_STRUC_C;
-  using Real = double;
-  static void call(Struc* id) { dmumps_c(id); }
-};
-struct SinglePrecision {
-  using Struc = SMUMPS_STRUC_C;
-  using Real = float;
-  static void call(Struc* id) { smumps_c(id); }
-};
 
 /// One MUMPS instance: analysis on the first factorisation, then numeric factorisations and
 /// solves in the precision P (MUMPS gets its own copy of the values).
@@ -95,33 +87,13 @@ class MumpsInstance {
     if (analyse) plan(A, analysed_);  // the second time round: no decoupled rows
     set_values(a);
     if (analyse) {
-      const auto t0 = Clock::now();
-      id_.job = 1;
-      P::call(&id_);
-      stats.analysis_seconds += seconds_since(t0);
-      ++stats.analyses;
-      if (infog(1) < 0) return false;
+      if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
     }
-    const auto t0 = Clock::now();
     for (Coupling& c : coupling_) c.value = a[c.position];
     for (std::size_t k = 0; k < decoupled_.size(); ++k) diagonal_[k] = a[decoupled_diagonal_[k]];
-    id_.job = 2;
-    P::call(&id_);
-    // Numerical pivoting can outgrow the analysis' estimate of the work space (INFOG(1) = -9,
-    // or -8/-14 for the integer one): more room, and factorise again.
-    for (int retry = 0; retry < 4 && (infog(1) == -8 || infog(1) == -9 || infog(1) == -14);
-         ++retry) {
-      icntl(14) = 2 * icntl(14) + 20;
-      P::call(&id_);
-    }
-    stats.factor_seconds += seconds_since(t0);
-    ++stats.factorizations;
-    if (infog(1) < 0) return false;
-    // INFOG(29): entries in the factors (negative: millions).
-    const double entries = infog(29) >= 0 ? infog(29) : -1e6 * infog(29);
-    stats.fill = entries / static_cast<double>(SUNSparseMatrix_NNZ(A));
-    return true;
+    return detail::mumps_factorise(id_, P::call, static_cast<double>(SUNSparseMatrix_NNZ(A)),
+                                   stats);
   }
 
   /// x = A⁻¹ b with the factors (x and b may alias); false if MUMPS fails.
@@ -295,21 +267,11 @@ SolutionError solution_error(SUNMatrix A, const double* b, const double* x, std:
 }
 
 /// MUMPS as a SUNLinearSolver, in double or mixed precision. Mixed: single-precision factors;
-/// each solution is refined in double precision (x ← x + LU⁻¹(b − A x)) until its
-/// componentwise backward error is at most kTargetBackwardError and its normwise relative
-/// residual ‖b − A x‖∞ / ‖b‖∞ at most kTargetResidual (a Newton correction with a larger
-/// residual would not reduce the nonlinear residual). A single-precision
-/// factorisation that fails, or a refinement that stalls, falls back to double-precision
-/// factors (counted in the stats) for the next few factorisations — 4, then twice as many
-/// after each further fallback, up to 64 — before single precision is tried again: IDA's first
-/// steps (h ~ 1e-6 s) need double precision, its later steps do not.
+/// each solution is refined in double precision (x ← x + LU⁻¹(b − A x)) until it meets the
+/// RefinementTarget; a single-precision factorisation that fails, or a refinement that stalls,
+/// falls back to double-precision factors as PrecisionBackoff schedules (mixed_precision.hpp).
 class MumpsSolver final : public detail::DirectSolver {
  public:
-  static constexpr double kTargetBackwardError = 1e-6;
-  static constexpr double kTargetResidual = 1e-4;
-  static constexpr int kMaxRefinementSteps = 10;
-  static constexpr int kFirstBackoff = 4, kMaxBackoff = 64;
-
   MumpsSolver(Ordering ordering, FactorPrecision precision, LinearSolverStats* stats,
               FillOrder order)
       : DirectSolver(stats),
@@ -318,7 +280,7 @@ class MumpsSolver final : public detail::DirectSolver {
         mixed_(precision == FactorPrecision::Mixed) {}
 
   int setup(SUNMatrix A) override {
-    if (mixed_ && double_factorisations_left_ == 0) {
+    if (mixed_ && backoff_.single_due()) {
       if (!single_) {
         double_.reset();  // one set of factors at a time
         single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_);
@@ -338,17 +300,12 @@ class MumpsSolver final : public detail::DirectSolver {
     if (!single_->solve(b_.data(), xv)) return SUNLS_PACKAGE_FAIL_UNREC;
     double b_max = 0.0;
     for (const double v : b_) b_max = std::max(b_max, std::abs(v));
-    // Accurate enough (≤ 1): componentwise backward error and normwise relative residual
-    // within their targets. The second matters where |A| |x| ≫ |b| (cancellation, as in IDA's
-    // first steps with h ~ 1e-12 s): a small backward error then still allows a residual as
-    // large as b itself, and Newton would not converge on such corrections.
     auto excess = [&] {
       const SolutionError e = solution_error(A, b_.data(), xv, r_, scale_, r2_, scale2_);
-      const double relative = b_max > 0.0 ? e.residual_max / b_max : 0.0;
-      return std::max(e.backward / kTargetBackwardError, relative / kTargetResidual);
+      return RefinementTarget::excess(e.backward, e.residual_max, b_max);
     };
     double error = excess();
-    for (int k = 0; k < kMaxRefinementSteps && error > 1.0; ++k) {
+    for (int k = 0; k < RefinementTarget::kMaxSteps && error > 1.0; ++k) {
       if (!single_->solve(r_.data(), r_.data())) return SUNLS_PACKAGE_FAIL_UNREC;
       for (std::size_t i = 0; i < n; ++i) xv[i] += r_[i];
       ++stats().refinement_steps;
@@ -363,25 +320,20 @@ class MumpsSolver final : public detail::DirectSolver {
   }
 
  private:
-  void fall_back_to_double() {
-    ++stats().precision_fallbacks;
-    double_factorisations_left_ = backoff_;
-    backoff_ = std::min(2 * backoff_, kMaxBackoff);
-  }
+  void fall_back_to_double() { backoff_.fall_back(stats()); }
   bool factorise_double(SUNMatrix A) {
     if (!double_) {
       single_.reset();
       double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
     }
-    if (double_factorisations_left_ > 0) --double_factorisations_left_;
+    backoff_.double_factorised();
     return double_->factorise(A, stats());
   }
 
   Ordering ordering_;
   FillOrder order_;
   bool mixed_;
-  int double_factorisations_left_ = 0;  ///< mixed: double-precision factorisations still due
-  int backoff_ = kFirstBackoff;         ///< mixed: length of the next fallback
+  PrecisionBackoff backoff_;  ///< mixed: when to factorise in double precision
   std::unique_ptr<MumpsInstance<SinglePrecision>> single_;
   std::unique_ptr<MumpsInstance<DoublePrecision>> double_;
   std::vector<double> b_, r_, scale_, r2_, scale2_;  ///< refinement work vectors

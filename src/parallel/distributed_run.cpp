@@ -47,11 +47,9 @@ void check_supported(const Config& config, const RunOptions& options) {
   if (is_two_dimensional(config.model))
     throw std::invalid_argument("model = \"" + to_string(config.model) +
                                 "\": the two-dimensional models run on one process only");
-  if (config.linear_solver.type != LinearSolverType::Mumps &&
-      config.linear_solver.type != LinearSolverType::Iterative)
-    throw std::invalid_argument(
-        "linear_solver.type: \"mumps\" (the parallel MUMPS) and \"iterative\" (FGMRES with a "
-        "field-split preconditioner) run on several processes; klu and umfpack on one only");
+  if (config.linear_solver.type == LinearSolverType::Klu ||
+      config.linear_solver.type == LinearSolverType::Umfpack)
+    throw std::invalid_argument(kOneProcessSolvers);
   for (FieldQuantity q : config.output.fields)
     if (q != FieldQuantity::Displacement && q != FieldQuantity::Pressure)
       throw std::invalid_argument("output.fields: \"" + to_string(q) +

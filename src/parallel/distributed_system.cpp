@@ -9,6 +9,7 @@
 
 #include "../physics/boundary_data.hpp"
 #include "biphasic/parallel/collective_failure.hpp"
+#include "biphasic/parallel/distributed_mumps_solver.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
 
@@ -113,7 +114,8 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
   }
   void factorise(int slot, const LinearSolverConfig&, LinearSolverStats* stats) override {
     // Double-precision LU whatever the configured solver, as in one process.
-    ls_ = make_petsc_direct_solver(assembly_.comm(), ctx_, stats ? stats : &own_stats_);
+    ls_ = make_distributed_mumps_solver(assembly_.comm(), FactorPrecision::Double,
+                                        assembly_.fill_order(), ctx_, stats ? stats : &own_stats_);
     factorised_ = slots_.at(static_cast<std::size_t>(slot));
     nx_ = system_.new_vector(ctx_);
     nb_ = system_.new_vector(ctx_);
@@ -227,7 +229,8 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
                                                      SUNContext ctx, LinearSolverStats* stats,
                                                      const SaddlePointStructure* saddle) const {
   if (config.type == LinearSolverType::Mumps)
-    return make_petsc_direct_solver(assembly_.comm(), ctx, stats);
+    return make_distributed_mumps_solver(assembly_.comm(), config.precision, assembly_.fill_order(),
+                                         ctx, stats);
   if (config.type == LinearSolverType::Iterative) {
     FieldSplitLayout layout;
     layout.owned = size();
@@ -244,9 +247,9 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
     return make_petsc_fieldsplit_solver(assembly_.comm(), config.krylov, std::move(layout), ctx,
                                         stats);
   }
-  throw std::invalid_argument(
-      "linear_solver.type: \"mumps\" (the parallel MUMPS) and \"iterative\" (FGMRES with a "
-      "field-split preconditioner) run on several processes; klu and umfpack on one only");
+  if (config.type == LinearSolverType::SuperluDist)
+    return make_superlu_dist_solver(assembly_.comm(), ctx, stats);
+  throw std::invalid_argument(kOneProcessSolvers);
 }
 
 std::pair<double, double> DistributedSystem::field_norms(const double* F) const {

@@ -3,8 +3,10 @@
 #include <nvector/nvector_parallel.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -104,17 +106,28 @@ struct SchurApproximation {
   }
 };
 
-/// LU by the parallel MUMPS, ordering PORD.
-void configure_direct(KSP ksp) {
+/// Sets each option not given by the user (so that the user's options, read later, win).
+void default_options(std::initializer_list<std::array<const char*, 2>> defaults) {
+  for (const auto& d : defaults) {
+    PetscBool set = PETSC_FALSE;
+    petsc_check(PetscOptionsHasName(nullptr, nullptr, d[0], &set), "PetscOptionsHasName");
+    if (!set) petsc_check(PetscOptionsSetValue(nullptr, d[0], d[1]), "PetscOptionsSetValue");
+  }
+}
+
+/// LU by SuperLU_DIST through PETSc, with its METIS column order on A + Aᵀ and no row
+/// permutation. (Debian's SuperLU_DIST has no MC64,
+/// whose licence forbids redistribution, and aborts when asked for it; its AWPM matching needs
+/// a square process grid. The biphasic matrices have a non-zero diagonal in every row, so
+/// SuperLU_DIST's static pivoting works without one.)
+void configure_superlu_dist(KSP ksp) {
   PC pc = nullptr;
   petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
   petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
   petsc_check(PCSetType(pc, PCLU), "PCSetType");
-  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-  petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-  Mat F = nullptr;
-  petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-  petsc_check(MatMumpsSetIcntl(F, 7, 4), "MatMumpsSetIcntl(7: PORD)");
+  default_options({{"-biphasic_mat_superlu_dist_colperm", "METIS_AT_PLUS_A"},
+                   {"-biphasic_mat_superlu_dist_rowperm", "NOROWPERM"}});
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERSUPERLU_DIST), "PCFactorSetMatSolverType");
 }
 
 KspContent* content(SUNLinearSolver S) { return static_cast<KspContent*>(S->content); }
@@ -232,8 +245,8 @@ LinearSolverPtr make_ksp_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats
 
 }  // namespace
 
-LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats) {
-  return make_ksp_solver(comm, ctx, stats, configure_direct);
+LinearSolverPtr make_superlu_dist_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats) {
+  return make_ksp_solver(comm, ctx, stats, configure_superlu_dist);
 }
 
 LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& config,
@@ -292,21 +305,15 @@ LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& 
       petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
                   "PCFieldSplitSetSchurPre");
     // Defaults of the splits, as options so that the user's options (read later) win.
-    const char* defaults[][2] = {
-        {"-biphasic_fieldsplit_u_ksp_type", "preonly"},
-        {"-biphasic_fieldsplit_u_pc_type", "hypre"},
-        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"},
-        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS"},
-        {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i"},
-        {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
-        {"-biphasic_fieldsplit_p_pc_type", "lu"},
-        {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
-        {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}};
-    for (const auto& d : defaults) {
-      PetscBool set = PETSC_FALSE;
-      petsc_check(PetscOptionsHasName(nullptr, nullptr, d[0], &set), "PetscOptionsHasName");
-      if (!set) petsc_check(PetscOptionsSetValue(nullptr, d[0], d[1]), "PetscOptionsSetValue");
-    }
+    default_options({{"-biphasic_fieldsplit_u_ksp_type", "preonly"},
+                     {"-biphasic_fieldsplit_u_pc_type", "hypre"},
+                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"},
+                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS"},
+                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i"},
+                     {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
+                     {"-biphasic_fieldsplit_p_pc_type", "lu"},
+                     {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
+                     {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}});
   };
   std::function<void(KSP, Mat)> refresh;
   if (schur) refresh = [schur](KSP ksp, Mat J) { schur->refresh(ksp, J); };

@@ -94,6 +94,21 @@ TEST(Cli, BadOverrideIsReported) {
   EXPECT_NE(r.output.find("time.dt"), std::string::npos) << r.output;
 }
 
+// SuperLU_DIST exists in the MPI program only: one process refuses it before any work, naming
+// the file and the key, and writes nothing.
+TEST(Cli, SuperluDistInOneProcessIsRefusedNamingTheKey) {
+  const fs::path file = write_case("superlu.toml", kValid);
+  const fs::path out = scratch_dir("biphasic_cli") / "superlu_out";
+  fs::remove_all(out);
+  const Result r = run("run " + file.string() + " -o " + out.string() +
+                       " --set linear_solver.type=\"superlu_dist\"");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find(file.string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("linear_solver.type"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mpirun"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 // A generated mesh is cached by the first run and read back by the second (without gmsh), with
 // the same results to the last digit.
 TEST(Cli, SecondRunTakesTheMeshFromTheCache) {

@@ -1,7 +1,9 @@
-// Backward Euler (KINSOL) on the distributed system, solved by the parallel MUMPS through PETSc,
-// against the one-process run of the same case (UMFPACK): every owned unknown after four steps
-// of a ramped compression with GLS and every kind of boundary condition, and the Newton
-// iterations step by step.
+// Backward Euler (KINSOL) on the distributed system against the one-process run of the same
+// case (UMFPACK): every owned unknown after four steps of a ramped compression with GLS and
+// every kind of boundary condition, and the Newton iterations step by step. Solved by the
+// parallel MUMPS called directly (double and mixed precision, the mesh's nested-dissection
+// order and PORD), by SuperLU_DIST through PETSc, and by FGMRES with the field-split
+// preconditioner.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,7 +79,24 @@ Config four_steps(const std::string& stabilisation) {
 }
 
 TEST(DistributedBackwardEuler, ParallelMumpsMatchesTheOneProcessRun) {
-  expect_same_run(four_steps("gls"), LinearSolverConfig{}, 1e-8);
+  for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed})
+    for (const Ordering ordering : {Ordering::Metis, Ordering::Amd}) {
+      SCOPED_TRACE(precision == FactorPrecision::Double ? "double" : "mixed");
+      SCOPED_TRACE(ordering == Ordering::Metis ? "nested dissection of the mesh" : "PORD");
+      LinearSolverConfig solver;
+      solver.precision = precision;
+      solver.ordering = ordering;
+      expect_same_run(four_steps("gls"), solver, 1e-8);
+    }
+}
+
+TEST(DistributedBackwardEuler, SuperluDistMatchesTheOneProcessRun) {
+  for (const char* stabilisation : {"none", "gls"}) {
+    SCOPED_TRACE(stabilisation);
+    LinearSolverConfig solver;
+    solver.type = LinearSolverType::SuperluDist;
+    expect_same_run(four_steps(stabilisation), solver, 1e-8);
+  }
 }
 
 TEST(DistributedBackwardEuler, FieldSplitFgmresMatchesTheOneProcessRun) {

@@ -81,6 +81,11 @@ struct SaddlePointStructure {
 /// except for UMFPACK, whose own METIS ordering suits its strategy better; otherwise empty.
 FillOrder fill_order(const LinearSolverConfig& config, const SparsityPattern& pattern);
 
+/// Why linear_solver.type = "superlu_dist" is refused in one process.
+inline constexpr const char* kSuperluDistNeedsProcesses =
+    "linear_solver.type = \"superlu_dist\" runs under mpirun with several processes only (in "
+    "one process: \"mumps\", \"umfpack\", \"klu\" or \"iterative\")";
+
 /// The solver the configuration names. `stats` must outlive the solver. The iterative solver
 /// needs `saddle` (and throws std::invalid_argument without it); the direct ones ignore it.
 LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext ctx,

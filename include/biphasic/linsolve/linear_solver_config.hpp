@@ -6,8 +6,9 @@ namespace biphasic {
 
 /// Klu, Umfpack, Mumps: sparse direct. Iterative: SUNDIALS FGMRES with a block-triangular
 /// preconditioner (BoomerAMG on the displacement block, a pressure Schur-complement
-/// approximation), for meshes where a factorisation runs out of time or memory.
-enum class LinearSolverType { Klu, Umfpack, Mumps, Iterative };
+/// approximation), for meshes where a factorisation runs out of time or memory. SuperluDist:
+/// sparse direct through PETSc, on several processes only (docs/parallel.md).
+enum class LinearSolverType { Klu, Umfpack, Mumps, Iterative, SuperluDist };
 enum class Ordering { Amd, Colamd, Metis };
 /// Arithmetic of MUMPS' factors. Mixed: single-precision LU (half the memory, about twice the
 /// speed), each solve refined in double precision until its componentwise backward error

@@ -45,6 +45,10 @@ class DistributedAssembly {
   /// This process's problem on its part of the mesh.
   BiphasicProblem& local_problem() { return *problem_; }
   const SubdomainDofs& dofs() const { return *dofs_; }
+  /// On process 0 with linear_solver.ordering = "metis": the unknowns in the nested-dissection
+  /// order of the whole mesh (mesh/nested_dissection.hpp), for the direct solver; elsewhere
+  /// empty.
+  const std::vector<Index>& fill_order() const { return fill_order_; }
 
   /// A new vector with the owned layout (the caller destroys it).
   Vec new_vector() const;
@@ -74,6 +78,7 @@ class DistributedAssembly {
   Subdomain sub_;
   std::unique_ptr<BiphasicProblem> problem_;
   std::unique_ptr<SubdomainDofs> dofs_;
+  std::vector<Index> fill_order_;
   VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
   Vec local_ = nullptr;           ///< sequential work vector in the local layout
   std::vector<double> y_, ydot_, F_;

@@ -14,6 +14,12 @@
 
 namespace biphasic {
 
+/// Why klu and umfpack are refused on several processes.
+inline constexpr const char* kOneProcessSolvers =
+    "linear_solver.type: \"mumps\", \"superlu_dist\" (sparse direct) and \"iterative\" "
+    "(FGMRES with a field-split preconditioner) run on several processes; klu and umfpack on one "
+    "only";
+
 class DistributedSystem final : public SemidiscreteSystem {
  public:
   /// `assembly` must outlive the system.
@@ -42,9 +48,11 @@ class DistributedSystem final : public SemidiscreteSystem {
   /// shift-corrected solver is a one-process method).
   void jacobian_into(double t, const double* y, const double* ydot, double cj, SUNMatrix J,
                      double* rate_values = nullptr) override;
-  /// linear_solver.type = "mumps": the parallel MUMPS through PETSc (make_petsc_direct_solver);
-  /// "iterative": FGMRES with the field-split preconditioner (make_petsc_fieldsplit_solver);
-  /// klu and umfpack throw std::invalid_argument naming the key.
+  /// linear_solver.type = "mumps": the parallel MUMPS called directly, in the configured
+  /// precision and (ordering "metis") the mesh's nested-dissection order
+  /// (make_distributed_mumps_solver); "superlu_dist": SuperLU_DIST through PETSc; "iterative":
+  /// FGMRES with the field-split preconditioner (make_petsc_fieldsplit_solver); klu and umfpack
+  /// throw std::invalid_argument naming the key (kOneProcessSolvers).
   LinearSolverPtr new_linear_solver(const LinearSolverConfig& config, SUNContext ctx,
                                     LinearSolverStats* stats,
                                     const SaddlePointStructure* saddle) const override;

@@ -21,13 +21,14 @@ SUNMatrix wrap_petsc_matrix(Mat A, SUNContext ctx);
 /// The PETSc matrix of a SUNMatrix made by wrap_petsc_matrix.
 Mat petsc_matrix(SUNMatrix M);
 
-/// A direct solver over a PETSc KSP on `comm`: LU factorisation by the parallel MUMPS
-/// (ordering PORD, the best this MUMPS build has without METIS), one solve per right-hand
-/// side; the KSP takes PETSc options with the prefix "biphasic_" (e.g.
-/// -biphasic_mat_mumps_icntl_14 40), so any other KSP/PC can be chosen at run time. The
-/// symbolic analysis is done once; each set-up refactorises. Vectors are N_Vector_Parallel
-/// whose local arrays are the owned entries. Counts set-ups as factorisations in `stats`.
-LinearSolverPtr make_petsc_direct_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats);
+/// A direct solver over a PETSc KSP on `comm`: LU factorisation by SuperLU_DIST with its
+/// METIS column order (on A + Aᵀ) and no row permutation, one solve per right-hand side. The
+/// KSP takes PETSc options with the prefix "biphasic_" (e.g.
+/// -biphasic_mat_superlu_dist_colperm MMD_AT_PLUS_A), so any other KSP/PC can be chosen at run
+/// time. The symbolic analysis is done once; each set-up refactorises. Vectors are
+/// N_Vector_Parallel whose local arrays are the owned entries. Counts set-ups as
+/// factorisations in `stats`.
+LinearSolverPtr make_superlu_dist_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats);
 
 /// What the field-split preconditioner needs of this process's owned range: how many of its
 /// unknowns are displacements (they come first, 3 per node) and those nodes' coordinates [mm]

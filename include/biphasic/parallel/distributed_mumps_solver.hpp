@@ -1,0 +1,41 @@
+// MUMPS called directly on several processes, for the memory and speed PETSc's interface to it
+// cannot give here: the fill-reducing order computed from the mesh (this MUMPS build has no
+// METIS, and PETSc passes no order of the caller's), and single-precision factors refined in
+// double precision as in one process (PETSc's MUMPS is real double only). docs/parallel.md.
+#pragma once
+
+#include <mpi.h>
+#include <sundials/sundials_context.h>
+
+#include <vector>
+
+#include "biphasic/linsolve/linear_solver.hpp"
+#include "biphasic/linsolve/linear_solver_config.hpp"
+#include "biphasic/mesh/mesh.hpp"
+
+namespace biphasic {
+
+/// LU of the distributed Jacobian (a PETSc AIJ matrix wrapped by wrap_petsc_matrix) by the
+/// parallel MUMPS on `comm`:
+/// - each process hands MUMPS its owned rows (distributed assembled input, ICNTL(18) = 3);
+///   the analysis runs once, on process 0, in the order `order` (order[k] = the unknown
+///   eliminated k-th, in the rank-major numbering; needed on process 0 only, elsewhere
+///   ignored) or, if it is empty, in MUMPS' PORD order;
+/// - each set-up refactorises; the right-hand side is gathered on process 0 and the solution
+///   scattered back (centralised, ICNTL(20) = ICNTL(21) = 0);
+/// - `precision` = Mixed: single-precision factors, each solution refined in double precision
+///   to the one-process solver's targets (componentwise backward error ≤ 1e-6, relative
+///   residual ≤ 1e-4), falling back to double-precision factors on the same schedule.
+/// Vectors are N_Vector_Parallel over the owned range. Collective in every call.
+LinearSolverPtr make_distributed_mumps_solver(MPI_Comm comm, FactorPrecision precision,
+                                              std::vector<Index> order, SUNContext ctx,
+                                              LinearSolverStats* stats);
+
+/// The rank-major unknowns (u_base/p_index per node, as PartitionedNumbering holds them) in the
+/// elimination order of `node_order` (nested_dissection_node_order): each node's three
+/// displacements, then its pressure if it has one.
+std::vector<Index> unknown_order(const std::vector<Index>& node_order,
+                                 const std::vector<Index>& u_base,
+                                 const std::vector<Index>& p_index);
+
+}  // namespace biphasic

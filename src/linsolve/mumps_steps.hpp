@@ -1,0 +1,59 @@
+// Steps shared by the MUMPS wrappers (sequential and parallel builds, double and single
+// precision). MUMPS' C headers are the same for both builds (only mpi.h differs, and they do
+// not include it). ICNTL/INFOG numbers are MUMPS' 1-based ones.
+#pragma once
+
+#include <dmumps_c.h>
+#include <smumps_c.h>
+
+#include "direct_solver.hpp"
+
+namespace biphasic::detail {
+
+/// MUMPS' C interface in double (d) and single (s) precision.
+struct DoublePrecision {
+  using Struc = DMUMPS_STRUC_C;
+  using Real = double;
+  static void call(Struc* id) { dmumps_c(id); }
+};
+struct SinglePrecision {
+  using Struc = SMUMPS_STRUC_C;
+  using Real = float;
+  static void call(Struc* id) { smumps_c(id); }
+};
+
+/// Analysis (JOB = 1) of `id`, timed and counted in `stats`; false if MUMPS fails.
+template <class Struc, class Call>
+bool mumps_analyse(Struc& id, Call call, LinearSolverStats& stats) {
+  const auto t0 = Clock::now();
+  id.job = 1;
+  call(&id);
+  stats.analysis_seconds += seconds_since(t0);
+  ++stats.analyses;
+  return id.infog[0] >= 0;
+}
+
+/// Numeric factorisation (JOB = 2) of `id`, timed and counted in `stats`, with the fill
+/// nnz(L + U) / `nnz` recorded. Numerical pivoting can outgrow the analysis' estimate of the
+/// work space (INFOG(1) = −9, or −8/−14 for the integer one): then ICNTL(14) grows to twice
+/// itself plus 20 % and MUMPS factorises again, up to four times. False if MUMPS fails.
+template <class Struc, class Call>
+bool mumps_factorise(Struc& id, Call call, double nnz, LinearSolverStats& stats) {
+  const auto t0 = Clock::now();
+  id.job = 2;
+  call(&id);
+  auto short_of_room = [&] { return id.infog[0] == -8 || id.infog[0] == -9 || id.infog[0] == -14; };
+  for (int retry = 0; retry < 4 && short_of_room(); ++retry) {
+    id.icntl[13] = 2 * id.icntl[13] + 20;
+    call(&id);
+  }
+  stats.factor_seconds += seconds_since(t0);
+  ++stats.factorizations;
+  if (id.infog[0] < 0) return false;
+  // INFOG(29): entries in the factors (negative: millions).
+  const double entries = id.infog[28] >= 0 ? id.infog[28] : -1e6 * id.infog[28];
+  stats.fill = entries / nnz;
+  return true;
+}
+
+}  // namespace biphasic::detail
