@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Wall time and peak memory per process of cases run on 1 process and on N processes.
 
-Runs each case with `biphasic run` (one process; the sequential MUMPS, in the precision the
-case asks for) and with `mpirun -n N biphasic run` (the parallel MUMPS through PETSc, double
-precision), one run at a time, and prints a Markdown table from the runs' own summary.json
+Runs each case with `biphasic run` (one process; the sequential MUMPS) and with
+`mpirun -n N biphasic run` (the parallel MUMPS), both with the case's linear solver settings
+(by default the mesh's nested-dissection order and mixed precision), one run at a time, and prints a Markdown table from the runs' own summary.json
 files (docs/parallel.md, *Measured*). Usage:
 
   tools/parallel_scaling.py [--processes 2] [--out results/parallel_scaling] CASE...
