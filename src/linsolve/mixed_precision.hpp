@@ -24,6 +24,24 @@ struct RefinementTarget {
     const double relative = b_max > 0.0 ? residual_max / b_max : 0.0;
     return std::max(backward / kBackwardError, relative / kResidual);
   }
+
+  enum class Outcome { Accurate, NotAccurate, SolverFailed };
+  /// Refines a solution until it meets the target: `correct()` applies one correction
+  /// x ← x + LU⁻¹(b − A x) (false: the solve failed), `excess()` measures the current x. Stops
+  /// after kMaxSteps, or when a step does not halve the excess (single precision is not enough
+  /// there). Counts the steps in `stats`.
+  template <class Correct, class Excess>
+  static Outcome refine(Correct correct, Excess excess, LinearSolverStats& stats) {
+    double error = excess();
+    for (int k = 0; k < kMaxSteps && error > 1.0; ++k) {
+      if (!correct()) return Outcome::SolverFailed;
+      ++stats.refinement_steps;
+      const double previous = error;
+      error = excess();
+      if (error > 0.5 * previous) break;  // stalled
+    }
+    return error <= 1.0 ? Outcome::Accurate : Outcome::NotAccurate;
+  }
 };
 
 /// After a single-precision factorisation fails or its refinement stalls, the next few

@@ -304,16 +304,19 @@ class MumpsSolver final : public detail::DirectSolver {
       const SolutionError e = solution_error(A, b_.data(), xv, r_, scale_, r2_, scale2_);
       return RefinementTarget::excess(e.backward, e.residual_max, b_max);
     };
-    double error = excess();
-    for (int k = 0; k < RefinementTarget::kMaxSteps && error > 1.0; ++k) {
-      if (!single_->solve(r_.data(), r_.data())) return SUNLS_PACKAGE_FAIL_UNREC;
+    auto correct = [&] {
+      if (!single_->solve(r_.data(), r_.data())) return false;
       for (std::size_t i = 0; i < n; ++i) xv[i] += r_[i];
-      ++stats().refinement_steps;
-      const double previous = error;
-      error = excess();
-      if (error > 0.5 * previous) break;  // stalled: single precision is not enough here
+      return true;
+    };
+    switch (RefinementTarget::refine(correct, excess, stats())) {
+      case RefinementTarget::Outcome::Accurate:
+        return SUNLS_SUCCESS;
+      case RefinementTarget::Outcome::SolverFailed:
+        return SUNLS_PACKAGE_FAIL_UNREC;
+      case RefinementTarget::Outcome::NotAccurate:
+        break;
     }
-    if (error <= 1.0) return SUNLS_SUCCESS;
     fall_back_to_double();
     if (!factorise_double(A)) return SUNLS_PACKAGE_FAIL_UNREC;
     return double_->solve(b_.data(), xv) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_UNREC;

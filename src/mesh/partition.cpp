@@ -193,4 +193,16 @@ Subdomain extract_subdomain(const Mesh& mesh, const MeshPartition& partition, in
   return sub;
 }
 
+std::vector<Index> unknown_order(const PartitionedNumbering& numbering,
+                                 const std::vector<Index>& node_order) {
+  std::vector<Index> order;
+  order.reserve(4 * node_order.size());
+  for (const Index n : node_order) {
+    const auto k = static_cast<std::size_t>(n);
+    for (Index c = 0; c < 3; ++c) order.push_back(numbering.u_base.at(k) + c);
+    if (numbering.p_index.at(k) >= 0) order.push_back(numbering.p_index[k]);
+  }
+  return order;
+}
+
 }  // namespace biphasic

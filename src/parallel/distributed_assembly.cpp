@@ -9,7 +9,6 @@
 
 #include "biphasic/mesh/nested_dissection.hpp"
 #include "biphasic/parallel/collective_failure.hpp"
-#include "biphasic/parallel/distributed_mumps_solver.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/physics/assembly_scope.hpp"
 
@@ -64,8 +63,7 @@ DistributedAssembly::DistributedAssembly(const Mesh& mesh, const Config& config,
   numbering_ = number_unknowns(mesh, partition);
   petsc_index(numbering_.size());
   if (rank_ == 0 && config.linear_solver.ordering == Ordering::Metis)
-    fill_order_ =
-        unknown_order(nested_dissection_node_order(mesh), numbering_.u_base, numbering_.p_index);
+    fill_order_ = unknown_order(numbering_, nested_dissection_node_order(mesh));
   run_collectively(comm, [&] {
     sub_ = extract_subdomain(mesh, partition, rank_);
     problem_ = std::make_unique<BiphasicProblem>(sub_.mesh, config, subdomain_scope(mesh, sub_));

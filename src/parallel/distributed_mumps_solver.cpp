@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "../linsolve/direct_solver.hpp"
@@ -75,6 +76,7 @@ class MumpsInstance {
  public:
   using Real = typename P::Real;
 
+  /// `perm_in` (the solver's) must outlive the instance.
   MumpsInstance(MPI_Comm comm, const std::vector<MUMPS_INT>& perm_in) : perm_in_(perm_in) {
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
@@ -99,7 +101,7 @@ class MumpsInstance {
     icntl(14) = 40;  // working-space relaxation [%]
     if (!perm_in_.empty()) {
       icntl(7) = 1;  // the caller's order, on process 0
-      if (host_) id_.perm_in = perm_in_.data();
+      if (host_) id_.perm_in = const_cast<MUMPS_INT*>(perm_in_.data());
     } else {
       icntl(7) = 4;  // PORD, the best order this build has of its own
     }
@@ -115,12 +117,16 @@ class MumpsInstance {
   /// yet done). Collective; false (on every process) if MUMPS fails.
   bool factorise(const OwnedRows& rows, MUMPS_INT8 global_nnz, MUMPS_INT n, bool analyse,
                  LinearSolverStats& stats) {
-    values_.assign(rows.values.begin(), rows.values.end());  // MUMPS' copy, in precision P
     id_.n = n;
     id_.nnz_loc = static_cast<MUMPS_INT8>(rows.irn.size());
     id_.irn_loc = const_cast<MUMPS_INT*>(rows.irn.data());
     id_.jcn_loc = const_cast<MUMPS_INT*>(rows.jcn.data());
-    id_.a_loc = values_.data();
+    if constexpr (std::is_same_v<Real, double>) {
+      id_.a_loc = const_cast<double*>(rows.values.data());  // read in place
+    } else {
+      values_.assign(rows.values.begin(), rows.values.end());
+      id_.a_loc = values_.data();
+    }
     if (analyse || !analysed_) {
       if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
@@ -150,8 +156,8 @@ class MumpsInstance {
 
   typename P::Struc id_{};
   bool host_ = false, analysed_ = false;
-  std::vector<MUMPS_INT> perm_in_;
-  std::vector<Real> values_, rhs_;
+  const std::vector<MUMPS_INT>& perm_in_;
+  std::vector<Real> values_, rhs_;  ///< single precision: MUMPS' copy of the values
 };
 
 /// The solver: owned rows in, right-hand side gathered on process 0, solution scattered (or,
@@ -205,21 +211,23 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
     x_ = std::move(full_);
     x_.resize(static_cast<std::size_t>(n_));
     MPI_Bcast(x_.data(), n_, MPI_DOUBLE, 0, comm_);
-    double error = excess();
-    for (int k = 0; k < RefinementTarget::kMaxSteps && error > 1.0; ++k) {
+    auto correct = [&] {
       gather(r_, full_);
-      if (!single_->solve(full_)) return SUNLS_PACKAGE_FAIL_UNREC;
+      if (!single_->solve(full_)) return false;
       full_.resize(static_cast<std::size_t>(n_));
       MPI_Bcast(full_.data(), n_, MPI_DOUBLE, 0, comm_);
       for (std::size_t i = 0; i < x_.size(); ++i) x_[i] += full_[i];
-      ++stats().refinement_steps;
-      const double previous = error;
-      error = excess();
-      if (error > 0.5 * previous) break;  // stalled: single precision is not enough here
-    }
-    if (error <= 1.0) {
-      std::copy_n(x_.begin() + offset_[static_cast<std::size_t>(rank_)], local, NV_DATA_P(x));
-      return SUNLS_SUCCESS;
+      return true;
+    };
+    switch (RefinementTarget::refine(
+        correct, [&] { return excess(); }, stats())) {
+      case RefinementTarget::Outcome::Accurate:
+        std::copy_n(x_.begin() + offset_[static_cast<std::size_t>(rank_)], local, NV_DATA_P(x));
+        return SUNLS_SUCCESS;
+      case RefinementTarget::Outcome::SolverFailed:
+        return SUNLS_PACKAGE_FAIL_UNREC;
+      case RefinementTarget::Outcome::NotAccurate:
+        break;
     }
     backoff_.fall_back(stats());
     if (!factorise_double(false)) return SUNLS_PACKAGE_FAIL_UNREC;
@@ -316,19 +324,6 @@ LinearSolverPtr make_distributed_mumps_solver(MPI_Comm comm, FactorPrecision pre
                                               LinearSolverStats* stats) {
   return detail::wrap_direct_solver(
       std::make_unique<DistributedMumpsSolver>(comm, precision, std::move(order), stats), ctx);
-}
-
-std::vector<Index> unknown_order(const std::vector<Index>& node_order,
-                                 const std::vector<Index>& u_base,
-                                 const std::vector<Index>& p_index) {
-  std::vector<Index> order;
-  order.reserve(4 * node_order.size());
-  for (const Index n : node_order) {
-    const auto k = static_cast<std::size_t>(n);
-    for (Index c = 0; c < 3; ++c) order.push_back(u_base.at(k) + c);
-    if (p_index.at(k) >= 0) order.push_back(p_index[k]);
-  }
-  return order;
 }
 
 }  // namespace biphasic

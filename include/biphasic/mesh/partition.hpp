@@ -54,6 +54,12 @@ PartitionedNumbering number_unknowns(const Mesh& mesh, const MeshPartition& part
 /// 3 num_nodes + v), its unknown in the rank-major numbering.
 std::vector<Index> rank_major_of_whole(const Mesh& mesh, const PartitionedNumbering& numbering);
 
+/// The unknowns of `numbering` in the elimination order of `node_order` (a permutation of the
+/// nodes, such as nested_dissection_node_order gives): each node's three displacements, then
+/// its pressure if it has one.
+std::vector<Index> unknown_order(const PartitionedNumbering& numbering,
+                                 const std::vector<Index>& node_order);
+
 /// One part's view of the mesh. Its mesh holds the part's own tetrahedra and every tetrahedron
 /// sharing a node with one of them (the ghost layer), so that each node an owned element
 /// touches has every element and boundary face around it here: its Dirichlet conditions and

@@ -31,11 +31,4 @@ LinearSolverPtr make_distributed_mumps_solver(MPI_Comm comm, FactorPrecision pre
                                               std::vector<Index> order, SUNContext ctx,
                                               LinearSolverStats* stats);
 
-/// The rank-major unknowns (u_base/p_index per node, as PartitionedNumbering holds them) in the
-/// elimination order of `node_order` (nested_dissection_node_order): each node's three
-/// displacements, then its pressure if it has one.
-std::vector<Index> unknown_order(const std::vector<Index>& node_order,
-                                 const std::vector<Index>& u_base,
-                                 const std::vector<Index>& p_index);
-
 }  // namespace biphasic
