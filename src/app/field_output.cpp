@@ -79,6 +79,13 @@ FieldLayout field_layout(const std::vector<FieldQuantity>& quantities) {
   return layout;
 }
 
+std::vector<std::vector<double>> selected_cell_values(const std::vector<FieldQuantity>& quantities,
+                                                      CellFields& fields) {
+  std::vector<std::vector<double>> cells;
+  for (FieldQuantity q : cell_quantities(quantities)) cells.push_back(take(fields, q));
+  return cells;
+}
+
 FieldOutput::FieldOutput(const std::vector<FieldQuantity>& quantities, const std::string& directory,
                          const Mesh& mesh, std::optional<double> keep_until)
     : cell_quantities_(cell_quantities(quantities)),
@@ -93,7 +100,7 @@ void FieldOutput::write(const BiphasicProblem& problem, double t, const std::vec
   std::vector<std::vector<double>> cells;
   if (!cell_quantities_.empty()) {
     CellFields fields = recover_cell_fields(problem, y.data());
-    for (FieldQuantity q : cell_quantities_) cells.push_back(take(fields, q));
+    cells = selected_cell_values(cell_quantities_, fields);
   }
   writer_.write(t, u, p, cells);
 }

@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "biphasic/parallel/distributed_system.hpp"
 #include "biphasic/parallel/mesh_broadcast.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
+#include "biphasic/physics/field_recovery.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
@@ -50,11 +52,6 @@ void check_supported(const Config& config, const RunOptions& options) {
   if (config.linear_solver.type == LinearSolverType::Klu ||
       config.linear_solver.type == LinearSolverType::Umfpack)
     throw std::invalid_argument(kOneProcessSolvers);
-  for (FieldQuantity q : config.output.fields)
-    if (q != FieldQuantity::Displacement && q != FieldQuantity::Pressure)
-      throw std::invalid_argument("output.fields: \"" + to_string(q) +
-                                  "\" is not written by a run on several processes yet "
-                                  "(displacement and pressure are)");
   if (options.restart)
     throw std::invalid_argument("--restart: a run on several processes cannot be continued yet");
 }
@@ -203,6 +200,60 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       summary["steps"] = nlohmann::json::array();
     }
 
+    // Cell fields: each process recovers its own elements' values; process 0 places them by
+    // the elements' numbers in the whole mesh.
+    const FieldLayout layout = field_layout(config.output.fields);
+    std::vector<int> owned_tets;  // local indices of the owned tetrahedra
+    for (std::size_t e = 0; e < sub.tet_owned.size(); ++e)
+      if (sub.tet_owned[e]) owned_tets.push_back(static_cast<int>(e));
+    std::vector<int> tet_counts(static_cast<std::size_t>(size)),
+        tet_displs(static_cast<std::size_t>(size));
+    std::vector<Index> tet_of;  // on process 0: the whole mesh's number of each gathered element
+    if (!layout.cells.empty()) {
+      const int mine = static_cast<int>(owned_tets.size());
+      MPI_Gather(&mine, 1, MPI_INT, tet_counts.data(), 1, MPI_INT, 0, comm);
+      for (std::size_t r = 1; r < tet_counts.size(); ++r)
+        tet_displs[r] = tet_displs[r - 1] + tet_counts[r - 1];
+      std::vector<Index> global(owned_tets.size());
+      for (std::size_t k = 0; k < owned_tets.size(); ++k)
+        global[k] = sub.global_tet[static_cast<std::size_t>(owned_tets[k])];
+      tet_of.resize(root ? mesh.tets.size() : 0);
+      MPI_Gatherv(global.data(), mine, MPI_INT64_T, tet_of.data(), tet_counts.data(),
+                  tet_displs.data(), MPI_INT64_T, 0, comm);
+    }
+    // The selected cell fields of the state (`local`: this process's unknowns, ghosts
+    // included), gathered on process 0 in the whole mesh's element order (elsewhere empty).
+    auto gather_cells = [&](const std::vector<double>& local) {
+      std::vector<std::vector<double>> mine;
+      run_collectively(comm, [&] {
+        CellFields recovered = recover_cell_fields(assembly.local_problem(), local.data());
+        mine = selected_cell_values(config.output.fields, recovered);
+      });
+      std::vector<std::vector<double>> whole(mine.size());
+      for (std::size_t q = 0; q < mine.size(); ++q) {
+        const int width = layout.cells[q].components;
+        std::vector<double> owned(owned_tets.size() * static_cast<std::size_t>(width));
+        for (std::size_t k = 0; k < owned_tets.size(); ++k)
+          std::copy_n(&mine[q][static_cast<std::size_t>(owned_tets[k] * width)], width,
+                      &owned[k * static_cast<std::size_t>(width)]);
+        std::vector<int> counts_q(tet_counts.size()), displs_q(tet_displs.size());
+        for (std::size_t r = 0; r < tet_counts.size(); ++r) {
+          counts_q[r] = tet_counts[r] * width;
+          displs_q[r] = tet_displs[r] * width;
+        }
+        std::vector<double> gathered(root ? mesh.tets.size() * static_cast<std::size_t>(width) : 0);
+        MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, gathered.data(),
+                    counts_q.data(), displs_q.data(), MPI_DOUBLE, 0, comm);
+        if (!root) continue;
+        whole[q].resize(gathered.size());
+        for (std::size_t k = 0; k < tet_of.size(); ++k)
+          std::copy_n(
+              &gathered[k * static_cast<std::size_t>(width)], width,
+              &whole[q][static_cast<std::size_t>(tet_of[k]) * static_cast<std::size_t>(width)]);
+      }
+      return whole;
+    };
+
     // Gathers an owned state into the one-process layout on process 0.
     std::vector<double> partitioned(root ? static_cast<std::size_t>(n_global) : 0);
     auto to_serial = [&](const std::vector<double>& owned, std::vector<double>& u,
@@ -231,6 +282,11 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     auto write_output = [&](double t, const std::vector<double>& y,
                             const std::vector<double>& ydot) {
       to_serial(y, u, p);
+      std::vector<std::vector<double>> cells;
+      if (!layout.cells.empty()) {
+        local_state(y, y_local);
+        cells = gather_cells(y_local);
+      }
       nlohmann::json o{{"t", t}};
       std::optional<LineMeasures> m;
       if (!config.output.reactions.empty()) {
@@ -261,7 +317,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       run_collectively(comm, [&] {
         if (!root) return;
         m = probes->write(t, u, p);
-        if (fields) fields->write(t, u, p, {});
+        if (fields) fields->write(t, u, p, cells);
         if (m) {
           o["p_mid"] = m->p_mid;
           o["overshoot"] = m->defined ? nlohmann::json(m->overshoot) : nlohmann::json(nullptr);
@@ -291,7 +347,8 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                              {"factorizations", ls.factorizations},
                              {"linear_solves", ls.solves},
                              {"krylov_iterations", ls.krylov_iterations},
-                             {"max_krylov_iterations", ls.max_krylov_iterations}};
+                             {"max_krylov_iterations", ls.max_krylov_iterations},
+                             {"amg_cycles", ls.amg_cycles}};
       summary["timings"] = {{"wall", wall[0]},
                             {"mesh", mesh_seconds},
                             {"setup", setup_seconds},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <initializer_list>
 #include <memory>
@@ -51,6 +52,10 @@ struct KspContent {
   std::function<void(KSP)> configure;
   /// Before every set-up, with the new matrix (may be empty).
   std::function<void(KSP, Mat)> refresh;
+  /// Once, after the first set-up, when the field split's sub-solvers exist (may be empty).
+  std::function<void(KSP)> after_first_setup;
+  /// After every converged solve, with its iterations (may be empty).
+  std::function<void(PetscInt)> after_solve;
 };
 
 /// The user Schur preconditioner S̃ = A_pp + C of the field-split solver, rebuilt at every
@@ -106,6 +111,13 @@ struct SchurApproximation {
   }
 };
 
+/// `value` as a PETSc option's text, to full precision.
+std::string option_number(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.17g", value);
+  return text.data();
+}
+
 /// Sets each option not given by the user (so that the user's options, read later, win).
 void default_options(std::initializer_list<std::array<const char*, 2>> defaults) {
   for (const auto& d : defaults) {
@@ -160,6 +172,10 @@ int ksp_setup(SUNLinearSolver S, SUNMatrix A) {
       c.refresh(c.ksp, J);
     }
     petsc_check(KSPSetUp(c.ksp), "KSPSetUp (factorisation)");
+    if (c.after_first_setup) {
+      c.after_first_setup(c.ksp);
+      c.after_first_setup = nullptr;
+    }
     ++c.stats->factorizations;
     c.stats->factor_seconds += seconds_since(t0);
     c.last_flag = 0;
@@ -195,6 +211,7 @@ int ksp_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype) {
       c.last_flag = SUNLS_CONV_FAIL;
       return c.last_flag;
     }
+    if (c.after_solve) c.after_solve(its);
     ++c.stats->solves;
     c.stats->solve_seconds += seconds_since(t0);
     c.last_flag = 0;
@@ -211,7 +228,9 @@ namespace {
 
 LinearSolverPtr make_ksp_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats,
                                 std::function<void(KSP)> configure,
-                                std::function<void(KSP, Mat)> refresh = {}) {
+                                std::function<void(KSP, Mat)> refresh = {},
+                                std::function<void(KSP)> after_first_setup = {},
+                                std::function<void(PetscInt)> after_solve = {}) {
   SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
   if (!S) throw std::runtime_error("SUNLinSolNewEmpty failed");
   auto* c = new KspContent{};
@@ -219,6 +238,8 @@ LinearSolverPtr make_ksp_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats
   c->stats = stats;
   c->configure = std::move(configure);
   c->refresh = std::move(refresh);
+  c->after_first_setup = std::move(after_first_setup);
+  c->after_solve = std::move(after_solve);
   S->content = c;
   S->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
   S->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
@@ -304,20 +325,59 @@ LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& 
     if (!schur)
       petsc_check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr),
                   "PCFieldSplitSetSchurPre");
-    // Defaults of the splits, as options so that the user's options (read later) win.
-    default_options({{"-biphasic_fieldsplit_u_ksp_type", "preonly"},
-                     {"-biphasic_fieldsplit_u_pc_type", "hypre"},
-                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"},
-                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS"},
-                     {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i"},
-                     {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
-                     {"-biphasic_fieldsplit_p_pc_type", "lu"},
-                     {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
-                     {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}});
+    // Defaults of the splits, as options so that the user's options (read later) win. The
+    // case file's AMG threshold and cycles, and its inner solve of the displacement block
+    // (block_rtol > 0: GMRES + AMG to that relative residual, as in one process).
+    const std::string threshold = option_number(config.amg_threshold);
+    const std::string cycles = std::to_string(config.amg_cycles);
+    const std::string block_rtol = option_number(config.block_rtol);
+    if (config.block_rtol > 0.0)
+      default_options({{"-biphasic_fieldsplit_u_ksp_type", "gmres"},
+                       {"-biphasic_fieldsplit_u_ksp_rtol", block_rtol.c_str()},
+                       {"-biphasic_fieldsplit_u_ksp_max_it", "100"}});
+    default_options(
+        {{"-biphasic_fieldsplit_u_ksp_type", "preonly"},
+         {"-biphasic_fieldsplit_u_pc_type", "hypre"},
+         {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", threshold.c_str()},
+         {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_max_iter", cycles.c_str()},
+         {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS"},
+         {"-biphasic_fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i"},
+         {"-biphasic_fieldsplit_p_ksp_type", "preonly"},
+         {"-biphasic_fieldsplit_p_pc_type", "lu"},
+         {"-biphasic_fieldsplit_p_pc_factor_mat_solver_type", "mumps"},
+         {"-biphasic_fieldsplit_p_mat_mumps_icntl_7", "4"}});
   };
   std::function<void(KSP, Mat)> refresh;
   if (schur) refresh = [schur](KSP ksp, Mat J) { schur->refresh(ksp, J); };
-  return make_ksp_solver(comm, ctx, stats, configure, refresh);
+  // AMG cycles on the displacement block: one per outer iteration (times the cycles per
+  // application) when the block is not solved by an inner Krylov method, else one per inner
+  // iteration, counted by a monitor on the block's solver.
+  auto cycles_per_outer = std::make_shared<long>(0);
+  auto after_first_setup = [stats, cycles = config.amg_cycles, cycles_per_outer](KSP ksp) {
+    PC pc = nullptr;
+    petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    PetscInt n = 0;
+    KSP* subs = nullptr;
+    petsc_check(PCFieldSplitGetSubKSP(pc, &n, &subs), "PCFieldSplitGetSubKSP");
+    KSP block = subs[0];
+    PetscFree(subs);
+    PetscBool preonly = PETSC_FALSE;
+    petsc_check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(block), KSPPREONLY, &preonly),
+                "PetscObjectTypeCompare");
+    if (preonly) {
+      *cycles_per_outer = cycles;
+      return;
+    }
+    auto count = [](KSP, PetscInt, PetscReal, void* counter) -> PetscErrorCode {
+      ++static_cast<LinearSolverStats*>(counter)->amg_cycles;
+      return 0;
+    };
+    petsc_check(KSPMonitorSet(block, count, stats, nullptr), "KSPMonitorSet");
+  };
+  auto after_solve = [stats, cycles_per_outer](PetscInt its) {
+    stats->amg_cycles += *cycles_per_outer * static_cast<long>(its);
+  };
+  return make_ksp_solver(comm, ctx, stats, configure, refresh, after_first_setup, after_solve);
 }
 
 }  // namespace biphasic

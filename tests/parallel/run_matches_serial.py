@@ -4,7 +4,11 @@
 The line probe (every row, u and p) and the reactions (every output) must agree to 1e-8 of
 their largest value, with the same Newton iterations step by step; the summary must record
 the processes and their partition; a case refused on several processes (KLU) must end every
-process with exit status 1 and one message. Extra arguments (--set ...) go to both runs. Usage: run_matches_serial.py BIPHASIC MPIEXEC N CASE [--set ...]
+process with exit status 1 and one message. With --compare-fields EXE, every field of the two
+runs' fields.h5 (displacement, pressure and the cell fields each process recovers for its own
+elements) must agree to 1e-8 of its largest value as well, checked by EXE
+(compare_fields.cpp). Extra arguments (--set ...) go to both runs. Usage:
+run_matches_serial.py BIPHASIC MPIEXEC N CASE [--compare-fields EXE] [--set ...]
 """
 import csv
 import json
@@ -31,6 +35,9 @@ def largest_difference(a, b, keys):
 def main():
     biphasic, mpiexec, processes, case = sys.argv[1:5]
     extra = sys.argv[5:]
+    compare_fields = None
+    if extra[:1] == ["--compare-fields"]:
+        compare_fields, extra = extra[1], extra[2:]
     overrides = ["--set", 'output.reactions=["top", "bottom"]'] + extra
     with tempfile.TemporaryDirectory() as tmp:
         serial, parallel = os.path.join(tmp, "serial"), os.path.join(tmp, "parallel")
@@ -55,6 +62,11 @@ def main():
             print(f"reactions.csv: largest difference {d:.2e} of the largest value")
             if not d <= 1e-8:
                 failures.append(f"reactions.csv differs by {d:.2e}")
+        if compare_fields:
+            fields = subprocess.run([compare_fields, os.path.join(serial, "fields.h5"),
+                                     os.path.join(parallel, "fields.h5"), "1e-8"])
+            if fields.returncode != 0:
+                failures.append("fields.h5 differs (see above)")
         with open(os.path.join(serial, "summary.json")) as f:
             s = json.load(f)
         with open(os.path.join(parallel, "summary.json")) as f:

@@ -13,10 +13,16 @@ namespace biphasic {
 
 class BiphasicProblem;
 class SectionProblem;
+struct CellFields;
 
 /// The writer's layout for `quantities`: displacement and pressure as nodal fields, the others
 /// as cell fields named as in the case file, in FieldQuantity order.
 FieldLayout field_layout(const std::vector<FieldQuantity>& quantities);
+
+/// The cell quantities among `quantities`, each moved out of `fields` (element-major, as
+/// CellFields), in the order of field_layout(quantities).cells.
+std::vector<std::vector<double>> selected_cell_values(const std::vector<FieldQuantity>& quantities,
+                                                      CellFields& fields);
 
 /// Writes the selected quantities of each output state.
 class FieldOutput {
