@@ -155,15 +155,22 @@ void DistributedAssembly::time_derivative(double t, Vec dFdt) {
   add_from_local(dFdt);
 }
 
-void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J) {
+void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate) {
   to_local(y, y_);
   to_local(ydot, ydot_);
-  run_collectively(comm_,
-                   [&] { problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data()); });
+  if (rate) rate_values_.resize(values_.size());
+  run_collectively(comm_, [&] {
+    problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data(),
+                       rate ? rate_values_.data() : nullptr);
+  });
   const auto& entries = dofs_->entries();
   for (std::size_t k = 0; k < entries.size(); ++k)
     coo_values_[k] = values_[static_cast<std::size_t>(entries[k].position)];
   petsc_check(MatSetValuesCOO(J, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+  if (!rate) return;
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    coo_values_[k] = rate_values_[static_cast<std::size_t>(entries[k].position)];
+  petsc_check(MatSetValuesCOO(rate, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
 }
 
 void DistributedAssembly::apply_dirichlet(double t, Vec y, Vec ydot) const {

@@ -12,6 +12,7 @@
 #include "biphasic/parallel/distributed_mumps_solver.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
+#include "biphasic/parallel/petsc_shift_corrected_solver.hpp"
 
 namespace biphasic {
 
@@ -168,6 +169,7 @@ DistributedSystem::DistributedSystem(DistributedAssembly& assembly) : assembly_(
 DistributedSystem::~DistributedSystem() {
   for (Vec* v : {&y_, &ydot_, &F_})
     if (*v) VecDestroy(v);
+  if (rate_) MatDestroy(&rate_);
 }
 
 const SparsityPattern& DistributedSystem::pattern() const {
@@ -185,11 +187,20 @@ void DistributedSystem::jacobian(double, const double*, const double*, double, d
 
 void DistributedSystem::jacobian_into(double t, const double* y, const double* ydot, double cj,
                                       SUNMatrix J, double* rate_values) {
-  if (rate_values)
-    throw std::invalid_argument(
-        "time.bdf.shift_correction needs the one-process matrix layout; set it to false under MPI");
+  if (rate_values) throw std::logic_error("a distributed system keeps dF/dydot as its own matrix");
   Placed yv(y_, y), ydv(ydot_, ydot);
-  assembly_.jacobian(t, yv, ydv, cj, petsc_matrix(J));
+  assembly_.jacobian(t, yv, ydv, cj, petsc_matrix(J), rate_);
+}
+
+LinearSolverPtr DistributedSystem::new_shift_corrected_solver(LinearSolverPtr inner,
+                                                              ShiftedMatrixFamily* family,
+                                                              SUNContext ctx,
+                                                              LinearSolverStats* stats, double rtol,
+                                                              int max_iterations) {
+  if (!rate_) rate_ = assembly_.new_matrix();
+  family->rate_values.clear();
+  return make_petsc_shift_corrected_solver(assembly_.comm(), std::move(inner), family, rate_, ctx,
+                                           stats, rtol, max_iterations);
 }
 
 void DistributedSystem::time_derivative(double t, double* dFdt) const {

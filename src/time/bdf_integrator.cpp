@@ -109,9 +109,10 @@ struct BdfIntegrator::Impl {
     auto* self = static_cast<Impl*>(data);
     self->cj = cj;
     return guarded_callback(self->failure, [&] {
-      self->problem.jacobian_into(
-          t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj, J,
-          self->shift_correction ? self->family.rate_values.data() : nullptr);
+      self->problem.jacobian_into(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), cj, J,
+                                  self->shift_correction && !self->family.rate_values.empty()
+                                      ? self->family.rate_values.data()
+                                      : nullptr);
       self->family.setup_shift = cj;
     });
   }
@@ -143,15 +144,14 @@ BdfIntegrator::BdfIntegrator(SemidiscreteSystem& problem, const TimeConfig& time
   m.shift_correction =
       time.bdf.shift_correction && linear_solver.type != LinearSolverType::Iterative;
   if (m.shift_correction) {
-    m.family.rate_values.assign(problem.pattern().nnz(), 0.0);
     m.family.current_shift = [&m] {
       realtype cj = 0.0;
       IDAGetCurrentCj(m.ida, &cj);
       return cj;
     };
-    m.ls = make_shift_corrected_solver(std::move(inner), &m.family, m.sc.ctx, &ls_stats_,
-                                       kShiftCorrectionRtolFactor * time.bdf.rtol,
-                                       kShiftCorrectionIterations);
+    m.ls = problem.new_shift_corrected_solver(std::move(inner), &m.family, m.sc.ctx, &ls_stats_,
+                                              kShiftCorrectionRtolFactor * time.bdf.rtol,
+                                              kShiftCorrectionIterations);
   } else {
     m.ls = std::move(inner);
   }

@@ -24,4 +24,13 @@ LinearSolverPtr SemidiscreteSystem::new_linear_solver(const LinearSolverConfig& 
   return make_linear_solver(config, ctx, stats, fill_order(config, pattern()), saddle);
 }
 
+LinearSolverPtr SemidiscreteSystem::new_shift_corrected_solver(LinearSolverPtr inner,
+                                                               ShiftedMatrixFamily* family,
+                                                               SUNContext ctx,
+                                                               LinearSolverStats* stats,
+                                                               double rtol, int max_iterations) {
+  family->rate_values.assign(static_cast<std::size_t>(pattern().nnz()), 0.0);
+  return make_shift_corrected_solver(std::move(inner), family, ctx, stats, rtol, max_iterations);
+}
+
 }  // namespace biphasic

@@ -75,6 +75,12 @@ def main():
         newton_p = [x["newton_iterations"] for x in p["steps"]]
         if newton_s != newton_p:
             failures.append(f"Newton iterations {newton_s} on one process, {newton_p} on {processes}")
+        # BDF: IDA's shift-corrected solves happen at the same steps on one and on N processes.
+        for key in ("shift_corrected_solves", "factorizations"):
+            a_count, b_count = s["counters"].get(key), p["counters"].get(key)
+            print(f"{key}: {a_count} on one process, {b_count} on {processes}")
+            if a_count != b_count:
+                failures.append(f"{key}: {a_count} on one process, {b_count} on {processes}")
         if p.get("status") != "completed" or p["parallel"]["processes"] != int(processes):
             failures.append("summary: status or process count wrong")
         if sum(p["parallel"]["owned_elements"]) != p["mesh"]["tetrahedra"]:

@@ -57,8 +57,9 @@ class DistributedAssembly {
 
   /// F(t, y, ẏ) of the whole system into F. Collective.
   void residual(double t, Vec y, Vec ydot, Vec F);
-  /// dF/dy + c_j dF/dẏ of the whole system into J (a matrix from new_matrix()). Collective.
-  void jacobian(double t, Vec y, Vec ydot, double cj, Mat J);
+  /// dF/dy + c_j dF/dẏ of the whole system into J (a matrix from new_matrix()), and dF/dẏ
+  /// into `rate` unless null (another such matrix). Collective.
+  void jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate = nullptr);
   /// ∂F/∂t of the whole system into dFdt. Collective.
   void time_derivative(double t, Vec dFdt);
   /// Sets the constrained entries of y (and of ẏ unless null) to their prescribed values.
@@ -83,6 +84,7 @@ class DistributedAssembly {
   Vec local_ = nullptr;           ///< sequential work vector in the local layout
   std::vector<double> y_, ydot_, F_;
   std::vector<double> values_;           ///< local CSC values
+  std::vector<double> rate_values_;      ///< local CSC values of dF/dẏ (when asked for)
   std::vector<PetscScalar> coo_values_;  ///< the contributed entries, in COO order
 };
 

@@ -44,10 +44,16 @@ class DistributedSystem final : public SemidiscreteSystem {
 
   N_Vector new_vector(SUNContext ctx) const override;
   SUNMatrix new_jacobian_matrix(SUNContext ctx) const override;
-  /// dF/dy + c_j dF/dẏ into the PETSc matrix of J; `rate_values` must be null (the
-  /// shift-corrected solver is a one-process method).
+  /// dF/dy + c_j dF/dẏ into the PETSc matrix of J, and dF/dẏ into the system's own rate
+  /// matrix once new_shift_corrected_solver() has made one; `rate_values` must be null (the
+  /// one-process layout).
   void jacobian_into(double t, const double* y, const double* ydot, double cj, SUNMatrix J,
                      double* rate_values = nullptr) override;
+  /// The shift-corrected solver on PETSc objects (make_petsc_shift_corrected_solver), with
+  /// dF/dẏ kept as a PETSc matrix of the Jacobian's pattern; family->rate_values stay empty.
+  LinearSolverPtr new_shift_corrected_solver(LinearSolverPtr inner, ShiftedMatrixFamily* family,
+                                             SUNContext ctx, LinearSolverStats* stats, double rtol,
+                                             int max_iterations) override;
   /// linear_solver.type = "mumps": the parallel MUMPS called directly, in the configured
   /// precision and (ordering "metis") the mesh's nested-dissection order
   /// (make_distributed_mumps_solver); "superlu_dist": SuperLU_DIST through PETSc; "iterative":
@@ -79,6 +85,7 @@ class DistributedSystem final : public SemidiscreteSystem {
   Index num_u_ = 0;
   std::vector<char> constrained_;
   Vec y_ = nullptr, ydot_ = nullptr, F_ = nullptr;  ///< storage-less, over caller arrays
+  Mat rate_ = nullptr;  ///< dF/dẏ at the last Jacobian (with the shift-corrected solver)
 };
 
 }  // namespace biphasic

@@ -90,6 +90,15 @@ class SemidiscreteSystem {
                                             LinearSolverStats* stats,
                                             const SaddlePointStructure* saddle) const;
 
+  /// The shift-corrected solver over `inner` (linsolve/linear_solver.hpp,
+  /// make_shift_corrected_solver) for this system's matrices; `family` must outlive it. The
+  /// default sizes family->rate_values to the pattern (jacobian_into then fills them);
+  /// a distributed system keeps dF/dẏ as its own matrix and leaves them empty.
+  virtual LinearSolverPtr new_shift_corrected_solver(LinearSolverPtr inner,
+                                                     ShiftedMatrixFamily* family, SUNContext ctx,
+                                                     LinearSolverStats* stats, double rtol,
+                                                     int max_iterations);
+
   /// The consistent start's matrices (time/entrywise_matrices.hpp) in this system's layout.
   virtual std::unique_ptr<EntrywiseMatrices> entrywise_matrices();
 
