@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -25,6 +24,7 @@
 #include "biphasic/app/field_output.hpp"
 #include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
+#include "biphasic/app/restart_support.hpp"
 #include "biphasic/app/segment_counters.hpp"
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
@@ -57,69 +57,6 @@ double seconds_since(Clock::time_point t0) {
 /// Replaces the file by the JSON text, checked; a reader never sees half a file.
 void write_json_atomically(const fs::path& path, const nlohmann::json& j) {
   write_file_atomically(path.string(), j.dump(2) + '\n');
-}
-
-constexpr const char* kCheckpointName = "checkpoint.bin";
-
-std::string number_text(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-/// Fingerprint of what a checkpoint's state depends on: the resolved configuration except
-/// time.t_end (a restart may go further), the title and the case file's name, and the mesh's
-/// nodes and elements (tetrahedra, or a section's triangles).
-template <class Elements>
-std::uint64_t case_fingerprint(const Config& config, const auto& nodes, const Elements& elements) {
-  nlohmann::json physical = config_to_json(config);
-  physical.erase("case_file");
-  physical.erase("title");
-  if (physical.contains("time")) physical["time"].erase("t_end");
-  std::uint64_t h = fnv1a64(physical.dump());
-  auto bytes = [](const auto& v) {
-    return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v.front()));
-  };
-  h = fnv1a64(bytes(nodes), h);
-  return fnv1a64(bytes(elements), h);
-}
-
-/// Checks that a checkpoint belongs to this case and mesh and lies before time.t_end.
-void accept_checkpoint(const Checkpoint& c, const std::string& path, std::uint64_t case_hash,
-                       std::size_t unknowns, const TimeConfig& time) {
-  if (c.case_hash != case_hash) {
-    throw CheckpointError("checkpoint " + path +
-                          " belongs to another case or mesh: a restart needs the case file, "
-                          "--set overrides and mesh of the earlier run (only time.t_end may "
-                          "change)");
-  }
-  if (c.y.size() != unknowns) {
-    throw CheckpointError("checkpoint " + path + " holds " + std::to_string(c.y.size()) +
-                          " unknowns, the case has " + std::to_string(unknowns));
-  }
-  if (c.t > time.t_end + 1e-9 * time.dt) {
-    throw CheckpointError("checkpoint " + path + " is at t = " + number_text(c.t) +
-                          " s, after time.t_end = " + number_text(time.t_end) + " s");
-  }
-}
-
-/// The summary.json of the run being continued; throws CheckpointError if there is none.
-nlohmann::json read_earlier_summary(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw CheckpointError("nothing to restart: no " + path.string());
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    throw CheckpointError("cannot restart: " + path.string() + " is damaged (" + e.what() + ")");
-  }
-}
-
-nlohmann::json measures_json(const LineMeasures& m) {
-  nlohmann::json j{{"p_mid", m.p_mid}, {"p_max", m.p_max}, {"p_min", m.p_min}};
-  j["overshoot"] = m.defined ? nlohmann::json(m.overshoot) : nlohmann::json(nullptr);
-  j["undershoot"] = m.defined ? nlohmann::json(m.undershoot) : nlohmann::json(nullptr);
-  j["oscillation"] = m.defined ? nlohmann::json(m.oscillation) : nlohmann::json(nullptr);
-  return j;
 }
 
 }  // namespace
@@ -228,8 +165,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     } catch (const std::invalid_argument& e) {
       throw CheckpointError("checkpoint " + checkpoint_path.string() + " is damaged: " + e.what());
     }
-    say("restart from " + checkpoint_path.string() + ": output step " +
-        std::to_string(resume->step) + " at t = " + number_text(resume->t) + " s");
+    say(restart_note(*resume, checkpoint_path.string()));
     write_json_atomically(summary_path, summary);
   }
   const Index num_nodes = planar ? mesh2->num_nodes() : mesh3->num_nodes();
@@ -622,8 +558,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   if (options.restart) {
     resume = read_checkpoint((out_dir / kCheckpointName).string());
     summary = read_earlier_summary(summary_path);
-    summary["restarts"].push_back(
-        {{"t", resume->t}, {"step", resume->step}, {"overrides", options.overrides}});
+    record_restart(summary, *resume, options.overrides);
   }
   start_summary(summary, config, options);
   summary.erase("error");

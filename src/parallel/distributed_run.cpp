@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -15,8 +16,11 @@
 
 #include "biphasic/app/field_output.hpp"
 #include "biphasic/app/probes.hpp"
+#include "biphasic/app/restart_support.hpp"
+#include "biphasic/app/segment_counters.hpp"
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/io/reaction_csv.hpp"
@@ -45,15 +49,46 @@ void write_json(const fs::path& path, const nlohmann::json& j) {
 }
 
 /// Refuses, before any work, what does not run on several processes yet.
-void check_supported(const Config& config, const RunOptions& options) {
+void check_supported(const Config& config) {
   if (is_two_dimensional(config.model))
     throw std::invalid_argument("model = \"" + to_string(config.model) +
                                 "\": the two-dimensional models run on one process only");
   if (config.linear_solver.type == LinearSolverType::Klu ||
       config.linear_solver.type == LinearSolverType::Umfpack)
     throw std::invalid_argument(kOneProcessSolvers);
-  if (options.restart)
-    throw std::invalid_argument("--restart: a run on several processes cannot be continued yet");
+}
+
+/// BackwardEuler::resume_state() is this many scalars, the same on every process, followed by
+/// whole vectors of the system's size: on several processes each holds its owned part of them.
+/// BDF's state is empty.
+constexpr std::size_t kResumeHeader = BackwardEuler::kResumeHeaderSize;
+
+/// run_collectively, except that a CheckpointError on any process is thrown as one on every
+/// process (the lowest such rank's message): a refused restart ends with exit status 1, as on
+/// one process, and leaves the summary as it was.
+void run_checking_checkpoint(MPI_Comm comm, const std::function<void()>& work) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  std::string refusal;
+  bool refused = false;
+  run_collectively(comm, [&] {
+    try {
+      work();
+    } catch (const CheckpointError& e) {
+      refused = true;
+      refusal = e.what();
+    }
+  });
+  const int mine = refused ? rank : size;
+  int speaker = size;
+  MPI_Allreduce(&mine, &speaker, 1, MPI_INT, MPI_MIN, comm);
+  if (speaker == size) return;
+  int length = static_cast<int>(refusal.size());
+  MPI_Bcast(&length, 1, MPI_INT, speaker, comm);
+  refusal.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(refusal.data(), length, MPI_CHAR, speaker, comm);
+  throw CheckpointError(refusal);
 }
 
 /// Peak resident memory of this process [GB].
@@ -80,33 +115,61 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  check_supported(config, options);
+  check_supported(config);
   const bool root = rank == 0;
   auto say = [&](const std::string& line) {
     if (root && !options.quiet) std::cout << line << std::endl;
   };
 
-  // Process 0: the output folder, the first summary, the mesh.
+  // Process 0: the output folder, the first summary, the mesh. A restart reads its checkpoint
+  // and the earlier summary, and checks the checkpoint against the case and the mesh, before
+  // anything is written (as on one process).
   std::unique_ptr<OutputFolder> folder;
   fs::path out_dir, summary_path;
   nlohmann::json summary;
   Mesh mesh;
   double mesh_seconds = 0.0;
-  run_collectively(comm, [&] {
+  std::optional<Checkpoint> resume;  // on process 0
+  std::uint64_t case_hash = 0;       // on process 0
+  run_checking_checkpoint(comm, [&] {
     if (!root) return;
+    if (options.restart && !fs::is_directory(options.output_dir))
+      throw CheckpointError("nothing to restart: no folder " + options.output_dir);
     try {
-      folder = std::make_unique<OutputFolder>(
-          options.output_dir, options.overwrite ? EarlierRun::Overwrite : EarlierRun::Refuse);
+      folder = std::make_unique<OutputFolder>(options.output_dir,
+                                              options.restart     ? EarlierRun::Continue
+                                              : options.overwrite ? EarlierRun::Overwrite
+                                                                  : EarlierRun::Refuse);
     } catch (const OutputFolderError& e) {
       throw std::invalid_argument(e.what());  // found before any work, as in one process
     }
     out_dir = folder->path();
     summary_path = out_dir / "summary.json";
+    if (options.restart) {
+      resume = read_checkpoint((out_dir / kCheckpointName).string());
+      summary = read_earlier_summary(summary_path);
+      record_restart(summary, *resume, options.overrides);
+    }
     start_summary(summary, config, options);
-    write_json(summary_path, summary);
+    summary.erase("error");
+    if (!resume) write_json(summary_path, summary);
     const auto t0 = Clock::now();
     mesh = build_mesh(config, out_dir.string());
     mesh_seconds = seconds_since(t0);
+    // The one-process fingerprint: the checkpoint does not depend on the process count.
+    case_hash = case_fingerprint(config, mesh.nodes, mesh.tets);
+    if (resume) {
+      const std::string path = (out_dir / kCheckpointName).string();
+      const std::size_t whole = static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices);
+      accept_checkpoint(*resume, path, case_hash, whole, config.time);
+      // The integrator's state must split into its header and whole vectors (or be empty).
+      const std::size_t m = resume->integrator_state.size();
+      if (m != 0 && (m < kResumeHeader || (m - kResumeHeader) % whole != 0 ||
+                     (m - kResumeHeader) / whole > 3))
+        throw CheckpointError("checkpoint " + path + " is damaged: an integrator state of " +
+                              std::to_string(m) + " values does not fit " + std::to_string(whole) +
+                              " unknowns");
+    }
   });
   auto record_failure = [&](const char* status, const std::string& message) {
     if (!root) return;
@@ -153,6 +216,104 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       for (std::size_t i = 0; i < whole_to_rank_major.size(); ++i)
         constrained_all[i] = flags[static_cast<std::size_t>(whole_to_rank_major[i])];
     }
+
+    // States in the one-process layout (checkpoints, outputs) and back (collective).
+    std::vector<double> partitioned(root ? static_cast<std::size_t>(n_global) : 0);
+    // An owned array gathered on process 0 in the one-process layout (elsewhere empty).
+    auto to_whole = [&](const double* owned) {
+      MPI_Gatherv(owned, static_cast<int>(system.size()), MPI_DOUBLE, partitioned.data(),
+                  counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+      std::vector<double> whole(whole_to_rank_major.size());
+      for (std::size_t i = 0; i < whole.size(); ++i)
+        whole[i] = partitioned[static_cast<std::size_t>(whole_to_rank_major[i])];
+      return whole;
+    };
+    // The inverse: each process's owned part of a whole array given on process 0.
+    auto to_owned = [&](const double* whole) {
+      for (std::size_t i = 0; i < whole_to_rank_major.size(); ++i)
+        partitioned[static_cast<std::size_t>(whole_to_rank_major[i])] = whole[i];
+      std::vector<double> owned(static_cast<std::size_t>(system.size()));
+      MPI_Scatterv(partitioned.data(), counts.data(), displs.data(), MPI_DOUBLE, owned.data(),
+                   static_cast<int>(owned.size()), MPI_DOUBLE, 0, comm);
+      return owned;
+    };
+    // The integrator's resume state on process 0 as one process would hold it: the header,
+    // then each of its vectors gathered.
+    auto whole_resume_state = [&] {
+      const std::vector<double> mine = integrator->resume_state();
+      std::vector<double> whole;
+      if (mine.empty()) return whole;  // BDF, on every process
+      const auto n = static_cast<std::size_t>(system.size());
+      run_collectively(comm, [&] {
+        if (mine.size() < kResumeHeader || (mine.size() - kResumeHeader) % n != 0)
+          throw std::logic_error("the integrator's resume state of " + std::to_string(mine.size()) +
+                                 " values does not fit " + std::to_string(n) + " owned unknowns");
+      });
+      if (root) whole.assign(mine.begin(), mine.begin() + kResumeHeader);
+      for (std::size_t at = kResumeHeader; at < mine.size(); at += n) {
+        const std::vector<double> part = to_whole(mine.data() + at);
+        whole.insert(whole.end(), part.begin(), part.end());
+      }
+      return whole;
+    };
+    // The inverse: this process's resume state from the whole one on process 0 (whose size
+    // the checkpoint's check has confirmed).
+    auto owned_resume_state = [&](const std::vector<double>& whole) {
+      const auto n = static_cast<std::size_t>(n_global);
+      long long shape[2] = {0, 0};  // header values, vectors
+      if (root && !whole.empty()) {
+        shape[0] = static_cast<long long>(kResumeHeader);
+        shape[1] = static_cast<long long>((whole.size() - kResumeHeader) / n);
+      }
+      MPI_Bcast(shape, 2, MPI_LONG_LONG, 0, comm);
+      std::vector<double> mine(static_cast<std::size_t>(shape[0]));
+      if (root) std::copy_n(whole.begin(), mine.size(), mine.begin());
+      MPI_Bcast(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, 0, comm);
+      for (long long b = 0; b < shape[1]; ++b) {
+        const std::vector<double> part = to_owned(
+            root ? whole.data() + kResumeHeader + static_cast<std::size_t>(b) * n : nullptr);
+        mine.insert(mine.end(), part.begin(), part.end());
+      }
+      return mine;
+    };
+
+    // A restart: every process takes its part of the checkpoint's state, and the integrator
+    // continues from the checkpoint's time as if never stopped.
+    std::vector<double> y(static_cast<std::size_t>(system.size()), 0.0);
+    double t_start = 0.0;
+    int step_offset = 0;  // output steps done before this run
+    if (options.restart) {
+      double where[2] = {0.0, 0.0};  // t, output step
+      if (root) {
+        where[0] = resume->t;
+        where[1] = static_cast<double>(resume->step);
+      }
+      MPI_Bcast(where, 2, MPI_DOUBLE, 0, comm);
+      t_start = where[0];
+      step_offset = static_cast<int>(where[1]);
+      y = to_owned(root ? resume->y.data() : nullptr);
+      const std::vector<double> state =
+          owned_resume_state(root ? resume->integrator_state : std::vector<double>());
+      const std::string path =
+          (fs::path(root ? out_dir.string() : options.output_dir) / kCheckpointName).string();
+      run_checking_checkpoint(comm, [&] {
+        try {
+          integrator->set_resume_state(state);
+        } catch (const std::invalid_argument& e) {
+          throw CheckpointError("checkpoint " + path + " is damaged: " + e.what());
+        }
+      });
+      if (root) {
+        say(restart_note(*resume, path));
+        write_json(summary_path, summary);
+      }
+    } else {
+      system.apply_dirichlet(0.0, y.data(), nullptr);
+    }
+    // What the checkpoint carries on: per-step records, outputs, totals of the earlier segments.
+    const nlohmann::json carried =
+        root && resume ? nlohmann::json::parse(resume->record) : nlohmann::json::object();
+
     std::unique_ptr<ProbeRecorder> probes;
     std::unique_ptr<ReactionCsv> reaction_csv;
     std::unique_ptr<FieldWriter> fields;
@@ -164,14 +325,21 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       } catch (const CaseError& e) {  // a probe outside the body: bad input (exit status 1)
         throw std::invalid_argument(e.what());
       }
+      // A restart drops what the earlier run wrote after its checkpoint, then appends.
+      const std::optional<double> keep = resume ? std::optional<double>(resume->t) : std::nullopt;
       probes = std::make_unique<ProbeRecorder>(std::move(lines), constrained_all,
-                                               3 * mesh.num_nodes(), out_dir.string());
+                                               3 * mesh.num_nodes(), out_dir.string(), keep);
       probes->describe(summary);
-      if (!config.output.reactions.empty())
-        reaction_csv = std::make_unique<ReactionCsv>((out_dir / "reactions.csv").string());
+      if (!config.output.reactions.empty()) {
+        const std::string path = (out_dir / "reactions.csv").string();
+        if (keep) keep_csv_rows_until(path, *keep);
+        reaction_csv = std::make_unique<ReactionCsv>(path, keep.has_value());
+      }
       if (!config.output.fields.empty())
-        fields = std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh,
-                                               field_layout(config.output.fields));
+        fields = keep ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, *keep,
+                                                      field_layout(config.output.fields))
+                      : std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh,
+                                                      field_layout(config.output.fields));
     });
     const double setup_seconds = seconds_since(setup0);
 
@@ -193,8 +361,8 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                              {"owned_elements", elements},
                              {"elements_with_ghosts", local_elements},
                              {"owned_unknowns", owned_unknowns}};
-      summary["outputs"] = nlohmann::json::array();
-      summary["steps"] = nlohmann::json::array();
+      summary["steps"] = carried.value("steps", nlohmann::json::array());
+      summary["outputs"] = carried.value("outputs", nlohmann::json::array());
     }
 
     // Cell fields: each process recovers its own elements' values; process 0 places them by
@@ -251,19 +419,14 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       return whole;
     };
 
-    // Gathers an owned state into the one-process layout on process 0.
-    std::vector<double> partitioned(root ? static_cast<std::size_t>(n_global) : 0);
+    // Gathers an owned state into the one-process layout on process 0, u and p apart.
     auto to_serial = [&](const std::vector<double>& owned, std::vector<double>& u,
                          std::vector<double>& p) {
-      MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, partitioned.data(),
-                  counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+      const std::vector<double> whole = to_whole(owned.data());
       if (!root) return;
-      const auto num_u = static_cast<std::size_t>(3 * mesh.num_nodes());
-      u.resize(num_u);
-      p.resize(whole_to_rank_major.size() - num_u);
-      for (std::size_t i = 0; i < whole_to_rank_major.size(); ++i)
-        (i < num_u ? u[i] : p[i - num_u]) =
-            partitioned[static_cast<std::size_t>(whole_to_rank_major[i])];
+      const auto num_u = static_cast<std::ptrdiff_t>(3 * mesh.num_nodes());
+      u.assign(whole.begin(), whole.begin() + num_u);
+      p.assign(whole.begin() + num_u, whole.end());
     };
     // Reactions: each process's share from its own elements, summed on process 0.
     Vec owned_view = nullptr;
@@ -276,19 +439,19 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       assembly.to_local(owned_view, local);
       VecResetArray(owned_view);
     };
-    auto write_output = [&](double t, const std::vector<double>& y,
-                            const std::vector<double>& ydot) {
-      to_serial(y, u, p);
+    auto write_output = [&](double t, const std::vector<double>& ys,
+                            const std::vector<double>& ydots) {
+      to_serial(ys, u, p);
       std::vector<std::vector<double>> cells;
       if (!layout.cells.empty()) {
-        local_state(y, y_local);
+        local_state(ys, y_local);
         cells = gather_cells(y_local);
       }
       nlohmann::json o{{"t", t}};
       std::optional<LineMeasures> m;
       if (!config.output.reactions.empty()) {
-        local_state(y, y_local);
-        local_state(ydot, ydot_local);
+        local_state(ys, y_local);
+        local_state(ydots, ydot_local);
         std::vector<std::array<double, 3>> forces;
         run_collectively(comm, [&] {
           forces = assembly.local_problem().reactions(config.output.reactions, t, y_local.data(),
@@ -315,11 +478,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         if (!root) return;
         m = probes->write(t, u, p);
         if (fields) fields->write(t, u, p, cells);
-        if (m) {
-          o["p_mid"] = m->p_mid;
-          o["overshoot"] = m->defined ? nlohmann::json(m->overshoot) : nlohmann::json(nullptr);
-          o["oscillation"] = m->defined ? nlohmann::json(m->oscillation) : nlohmann::json(nullptr);
-        }
+        if (m) o.update(measures_json(*m));  // the entry a one-process run records
         summary["outputs"].push_back(o);
       });
       return m;
@@ -360,50 +519,93 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       summary["parallel"]["peak_memory_gb"] = memory;
       summary["parallel"]["assembly_seconds"] = assembly_seconds;
       summary["parallel"]["factorization_seconds"] = factor_seconds;
+      if (config.time.integrator == Integrator::BackwardEuler) {
+        nlohmann::json cuts = nlohmann::json::array();
+        for (const Cutback& c : is.cutbacks)
+          cuts.push_back({{"step", c.step}, {"t", c.t}, {"dt", c.dt}, {"reason", c.reason}});
+        summary["cutbacks"] = cuts;
+      }
+      // After a restart: the totals the checkpoint carried plus this segment's work.
+      for (const char* key : {"counters", "timings", "cutbacks"})
+        if (carried.contains(key) && summary.contains(key))
+          summary[key] = combine_segments(carried[key], summary[key]);
     };
 
-    std::vector<double> y(static_cast<std::size_t>(system.size()), 0.0);
-    system.apply_dirichlet(0.0, y.data(), nullptr);
-    write_output(0.0, y, std::vector<double>(y.size(), 0.0));
+    // The checkpoint (process 0 writes it), in the one-process layout: state, rate, time, output
+    // step, the integrator's resume state, and what the summary carries on (collective).
+    const std::string checkpoint_path = (out_dir / kCheckpointName).string();
+    auto write_restart_point = [&](int step, double t, double last_dt,
+                                   const std::vector<double>& ys,
+                                   const std::vector<double>& ydots) {
+      std::vector<double> y_whole = to_whole(ys.data());
+      std::vector<double> ydot_whole = to_whole(ydots.data());
+      std::vector<double> state = whole_resume_state();
+      nlohmann::json record;
+      if (root) record = {{"steps", summary["steps"]}, {"outputs", summary["outputs"]}};
+      record_counters();  // totals up to this output, earlier segments included
+      run_collectively(comm, [&] {
+        if (!root) return;
+        for (const char* key : {"counters", "timings", "cutbacks"})
+          if (summary.contains(key)) record[key] = summary[key];
+        write_checkpoint(checkpoint_path,
+                         Checkpoint{case_hash, step, t, last_dt, std::move(y_whole),
+                                    std::move(ydot_whole), record.dump(), std::move(state)});
+      });
+    };
+
+    if (!options.restart) {
+      const std::vector<double> ydot0(y.size(), 0.0);
+      write_output(0.0, y, ydot0);
+      write_restart_point(0, 0.0, 0.0, y, ydot0);
+    }
     const int every = std::max(1, config.output.every);
     const int planned = integrator->planned_outputs();
-    integrator->run(
-        0.0, y,
-        [&](const StepInfo& info, const std::vector<double>& ys, const std::vector<double>& ydots) {
-          const bool output_now = info.step % every == 0 || info.step == planned;
-          std::string mid;
-          if (output_now)
-            if (const std::optional<LineMeasures> m = write_output(info.t, ys, ydots)) {
-              char buf[128];
-              std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f",
-                            m->p_mid, m->defined ? m->overshoot : 0.0,
-                            m->defined ? m->oscillation : 0.0);
-              mid = buf;
-            }
-          if (root)
-            summary["steps"].push_back({{"step", info.step},
-                                        {"t", info.t},
-                                        {"dt", info.dt},
-                                        {"sub_steps", info.sub_steps},
-                                        {"newton_iterations", info.newton_iterations},
-                                        {"jacobian_evaluations", info.setups},
-                                        {"residual_u", info.residual_u},
-                                        {"residual_p", info.residual_p}});
-          char line[256];
-          if (uses_ida(config.time.integrator))
-            std::snprintf(line, sizeof line,
-                          "output %4d/%d  t %9.4g s  steps %4d  order %d  h %8.3g s  newton %3d  "
-                          "|R_u| %.2e N  |R_p| %.2e mm3/s",
-                          info.step, planned, info.t, info.internal_steps, info.order, info.dt,
-                          info.newton_iterations, info.residual_u, info.residual_p);
-          else
-            std::snprintf(line, sizeof line,
-                          "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
-                          "|R_p| %.2e mm3/s",
-                          info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
-                          info.residual_u, info.residual_p);
-          say(line + mid);
-        });
+    auto observer = [&](const StepInfo& segment_info, const std::vector<double>& ys,
+                        const std::vector<double>& ydots) {
+      StepInfo info = segment_info;
+      info.step += step_offset;
+      const bool output_now = info.step % every == 0 || info.step == planned;
+      std::string mid;
+      std::optional<LineMeasures> m;
+      if (output_now) m = write_output(info.t, ys, ydots);
+      if (m) {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "  p_mid %.4e MPa  overshoot %+.3f  oscillation %.3f",
+                      m->p_mid, m->defined ? m->overshoot : 0.0, m->defined ? m->oscillation : 0.0);
+        mid = buf;
+      }
+      if (root) {
+        nlohmann::json rec{{"step", info.step},
+                           {"t", info.t},
+                           {"dt", info.dt},
+                           {"order", info.order},
+                           {"internal_steps", info.internal_steps},
+                           {"sub_steps", info.sub_steps},
+                           {"newton_iterations", info.newton_iterations},
+                           {"jacobian_evaluations", info.setups},
+                           {"residual_u", info.residual_u},
+                           {"residual_p", info.residual_p}};
+        if (m) rec["p_mid"] = m->p_mid;
+        summary["steps"].push_back(rec);
+      }
+      if (output_now) write_restart_point(info.step, info.t, info.dt, ys, ydots);
+      char line[256];
+      if (uses_ida(config.time.integrator))
+        std::snprintf(line, sizeof line,
+                      "output %4d/%d  t %9.4g s  steps %4d  order %d  h %8.3g s  newton %3d  "
+                      "|R_u| %.2e N  |R_p| %.2e mm3/s",
+                      info.step, planned, info.t, info.internal_steps, info.order, info.dt,
+                      info.newton_iterations, info.residual_u, info.residual_p);
+      else
+        std::snprintf(line, sizeof line,
+                      "step %4d/%d  t %9.4g s  dt %8.3g s  newton %2d  jac %d  |R_u| %.2e N  "
+                      "|R_p| %.2e mm3/s",
+                      info.step, planned, info.t, info.dt, info.newton_iterations, info.setups,
+                      info.residual_u, info.residual_p);
+      say(line + mid);
+    };
+    // A restart from a checkpoint at t_end has nothing left to do.
+    if (t_start < config.time.t_end - 1e-9 * config.time.dt) integrator->run(t_start, y, observer);
     VecDestroy(&owned_view);
     record_counters();
     if (root) {
@@ -415,6 +617,8 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         << summary["timings"]["wall"].get<double>() << " s; output in " << out_dir.string();
       say(s.str());
     }
+  } catch (const CheckpointError&) {
+    throw;  // refused before anything was written
   } catch (const std::invalid_argument& e) {
     record_failure("invalid", e.what());  // input found bad after the folder was made
     throw;

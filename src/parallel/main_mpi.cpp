@@ -1,7 +1,8 @@
 // biphasic_mpi: `biphasic run` on several MPI processes (docs/parallel.md). Started by mpirun,
 // directly or through `biphasic`, which hands over to it when mpirun started more than one
-// process. Options: run CASE [-o DIR] [--set key=value ...] [--overwrite] [--quiet]; PETSc
-// options (e.g. -biphasic_mat_mumps_icntl_14 40) may follow on the same command line.
+// process. Options: run CASE [-o DIR] [--set key=value ...] [--restart DIR] [--overwrite]
+// [--quiet]; PETSc options (e.g. -biphasic_mat_mumps_icntl_14 40) may follow on the same
+// command line.
 #include <petscsys.h>
 
 #include <cstdlib>
@@ -12,6 +13,7 @@
 
 #include "biphasic/app/run_arguments.hpp"
 #include "biphasic/io/case_file.hpp"
+#include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/parallel/distributed_run.hpp"
 #include "biphasic/time/progress_meter.hpp"
@@ -23,15 +25,23 @@ int run(const std::vector<std::string>& args, int rank) {
   if (args.empty() || args[0] != "run")
     throw std::invalid_argument(
         "biphasic_mpi runs cases only: biphasic_mpi run CASE [-o DIR] [--set key=value ...] "
-        "[--overwrite] [--quiet] (check, schema and help: biphasic)");
+        "[--restart DIR] [--overwrite] [--quiet] (check, schema and help: biphasic)");
   biphasic::RunArguments parsed =
       biphasic::parse_run_arguments({args.begin() + 1, args.end()}, /*foreign_options=*/true);
-  if (!parsed.restart_dir.empty())
-    throw std::invalid_argument("--restart: a run on several processes cannot be continued yet");
   const std::string& case_path = parsed.case_path;
   const std::vector<std::string>& overrides = parsed.overrides;
   biphasic::RunOptions& options = parsed.options;
-  const std::string& out_dir = parsed.output_dir;
+  std::string& out_dir = parsed.output_dir;
+  // --restart DIR continues the run in DIR (as `biphasic run` does on one process).
+  if (const std::string& restart_dir = parsed.restart_dir; !restart_dir.empty()) {
+    if (!out_dir.empty() && out_dir != restart_dir)
+      throw std::invalid_argument("--restart " + restart_dir + " writes into " + restart_dir +
+                                  "; -o " + out_dir + " contradicts it");
+    if (options.overwrite)
+      throw std::invalid_argument("--restart continues a run, --overwrite deletes it: give one");
+    out_dir = restart_dir;
+    options.restart = true;
+  }
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   options.output_dir =
       out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
@@ -67,6 +77,8 @@ int main(int argc, char** argv) {
     for (const auto& p : e.problems()) text += "  " + p + "\n";
     report(text, 1);
   } catch (const std::invalid_argument& e) {
+    report(std::string("error: ") + e.what() + "\n", 1);
+  } catch (const biphasic::CheckpointError& e) {
     report(std::string("error: ") + e.what() + "\n", 1);
   } catch (const biphasic::OutputFolderError& e) {
     report(std::string("error: ") + e.what() + "\n", 1);

@@ -192,7 +192,7 @@ namespace {
 // Layout of BackwardEuler::resume_state(): a header of kResumeHeader values, then y_previous
 // (n values, if dt_previous > 0), then jac_y and jac_y_old (n each, if a factorisation is held).
 constexpr double kResumeLayout = 1.0;
-constexpr std::size_t kResumeHeader = 8;
+constexpr std::size_t kResumeHeader = BackwardEuler::kResumeHeaderSize;
 }  // namespace
 
 std::vector<double> BackwardEuler::resume_state() const {

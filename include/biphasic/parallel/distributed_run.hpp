@@ -19,6 +19,12 @@ namespace biphasic {
 /// = "mumps" (the parallel MUMPS through PETSc). Anything else is refused before any work with
 /// std::invalid_argument naming the key. Failures are thrown on every process; process 0
 /// records them in summary.json first. Returns the summary (complete on process 0).
+///
+/// Process 0 writes checkpoint.bin at every output exactly as a one-process run of the case
+/// would (state, rate and integrator state gathered into the one-process layout), and with
+/// options.restart every process continues from its part of such a checkpoint, written on any
+/// number of processes; a missing, damaged or foreign checkpoint throws CheckpointError on
+/// every process before anything is written (run_case in app/run.hpp).
 nlohmann::json run_distributed(const Config& config, const RunOptions& options, MPI_Comm comm);
 
 }  // namespace biphasic

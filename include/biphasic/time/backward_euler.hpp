@@ -6,6 +6,7 @@
 // iterations and steps while convergence allows (KINSetMaxSetupCalls, KINSetNoInitSetup).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -44,6 +45,8 @@ class BackwardEuler final : public TimeIntegrator {
   /// length of the previous step (the next Newton guess extrapolates along it), the cut-back
   /// level, and the point (t, Δt, y, yₙ) where the kept factorisation was evaluated; restored,
   /// it reproduces an uninterrupted run to round-off.
+  /// resume_state() is this many scalars, then up to three vectors of the system's size.
+  static constexpr std::size_t kResumeHeaderSize = 8;
   std::vector<double> resume_state() const override;
   void set_resume_state(const std::vector<double>& state) override;
 
