@@ -36,8 +36,7 @@ bool asks_for_help(const std::vector<std::string>& args) {
 int run_command(const std::vector<std::string>& args, bool validate_only) {
   biphasic::RunArguments parsed = biphasic::parse_run_arguments(args);
   const std::string& case_path = parsed.case_path;
-  std::string& out_dir = parsed.output_dir;
-  const std::string& restart_dir = parsed.restart_dir;
+  const std::string& out_dir = parsed.output_dir;
   const std::vector<std::string>& overrides = parsed.overrides;
   biphasic::RunOptions& options = parsed.options;
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
@@ -52,15 +51,7 @@ int run_command(const std::vector<std::string>& args, bool validate_only) {
     for (const std::string& note : notes) std::cout << note << "\n";
     return 0;
   }
-  if (!restart_dir.empty()) {
-    if (!out_dir.empty() && out_dir != restart_dir)
-      throw std::invalid_argument("--restart " + restart_dir + " writes into " + restart_dir +
-                                  "; -o " + out_dir + " contradicts it");
-    if (options.overwrite)
-      throw std::invalid_argument("--restart continues a run, --overwrite deletes it: give one");
-    out_dir = restart_dir;
-    options.restart = true;
-  }
+  biphasic::continue_in_restart_folder(parsed);
   options.output_dir =
       out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;
   options.overrides = overrides;

@@ -61,4 +61,17 @@ nlohmann::json measures_json(const LineMeasures& m) {
   return j;
 }
 
+nlohmann::json step_record(const StepInfo& info) {
+  return {{"step", info.step},
+          {"t", info.t},
+          {"dt", info.dt},
+          {"order", info.order},
+          {"internal_steps", info.internal_steps},
+          {"sub_steps", info.sub_steps},
+          {"newton_iterations", info.newton_iterations},
+          {"jacobian_evaluations", info.setups},
+          {"residual_u", info.residual_u},
+          {"residual_p", info.residual_p}};
+}
+
 }  // namespace biphasic

@@ -460,16 +460,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
                       const std::vector<double>& ydots) {
     StepInfo info = segment_info;
     info.step += step_offset;
-    nlohmann::json rec{{"step", info.step},
-                       {"t", info.t},
-                       {"dt", info.dt},
-                       {"order", info.order},
-                       {"internal_steps", info.internal_steps},
-                       {"sub_steps", info.sub_steps},
-                       {"newton_iterations", info.newton_iterations},
-                       {"jacobian_evaluations", info.setups},
-                       {"residual_u", info.residual_u},
-                       {"residual_p", info.residual_p}};
+    nlohmann::json rec = step_record(info);
     const bool output_now = info.step % every == 0 || info.step == planned;
     std::string mid;
     if (output_now) {

@@ -38,4 +38,15 @@ RunArguments parse_run_arguments(const std::vector<std::string>& args, bool fore
   return r;
 }
 
+void continue_in_restart_folder(RunArguments& r) {
+  if (r.restart_dir.empty()) return;
+  if (!r.output_dir.empty() && r.output_dir != r.restart_dir)
+    throw std::invalid_argument("--restart " + r.restart_dir + " writes into " + r.restart_dir +
+                                "; -o " + r.output_dir + " contradicts it");
+  if (r.options.overwrite)
+    throw std::invalid_argument("--restart continues a run, --overwrite deletes it: give one");
+  r.output_dir = r.restart_dir;
+  r.options.restart = true;
+}
+
 }  // namespace biphasic

@@ -196,24 +196,11 @@ ShiftCorrectedSolver* solver_of(SUNLinearSolver S) {
 SUNLinearSolver_Type op_gettype(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
 SUNLinearSolver_ID op_getid(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
 int op_initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
-/// No exception may cross SUNDIALS' C frames: one is stored in the stats (last_error) and
-/// reported as an unrecoverable failure.
-template <class Call>
-int guarded(LinearSolverStats* stats, Call&& call) noexcept {
-  try {
-    return call();
-  } catch (const std::exception& e) {
-    if (stats) stats->last_error = e.what();
-  } catch (...) {
-    if (stats) stats->last_error = "an exception of unknown type";
-  }
-  return SUNLS_PACKAGE_FAIL_UNREC;
-}
 int op_setup(SUNLinearSolver S, SUNMatrix A) {
-  return guarded(solver_of(S)->stats(), [&] { return solver_of(S)->setup(A); });
+  return guarded_solver_call(solver_of(S)->stats(), [&] { return solver_of(S)->setup(A); });
 }
 int op_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype) {
-  return guarded(solver_of(S)->stats(), [&] { return solver_of(S)->solve(A, x, b); });
+  return guarded_solver_call(solver_of(S)->stats(), [&] { return solver_of(S)->solve(A, x, b); });
 }
 sunindextype op_lastflag(SUNLinearSolver S) { return solver_of(S)->last_flag(); }
 int op_free(SUNLinearSolver S) {

@@ -575,16 +575,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         mid = buf;
       }
       if (root) {
-        nlohmann::json rec{{"step", info.step},
-                           {"t", info.t},
-                           {"dt", info.dt},
-                           {"order", info.order},
-                           {"internal_steps", info.internal_steps},
-                           {"sub_steps", info.sub_steps},
-                           {"newton_iterations", info.newton_iterations},
-                           {"jacobian_evaluations", info.setups},
-                           {"residual_u", info.residual_u},
-                           {"residual_p", info.residual_p}};
+        nlohmann::json rec = step_record(info);
         if (m) rec["p_mid"] = m->p_mid;
         summary["steps"].push_back(rec);
       }

@@ -31,17 +31,8 @@ int run(const std::vector<std::string>& args, int rank) {
   const std::string& case_path = parsed.case_path;
   const std::vector<std::string>& overrides = parsed.overrides;
   biphasic::RunOptions& options = parsed.options;
-  std::string& out_dir = parsed.output_dir;
-  // --restart DIR continues the run in DIR (as `biphasic run` does on one process).
-  if (const std::string& restart_dir = parsed.restart_dir; !restart_dir.empty()) {
-    if (!out_dir.empty() && out_dir != restart_dir)
-      throw std::invalid_argument("--restart " + restart_dir + " writes into " + restart_dir +
-                                  "; -o " + out_dir + " contradicts it");
-    if (options.overwrite)
-      throw std::invalid_argument("--restart continues a run, --overwrite deletes it: give one");
-    out_dir = restart_dir;
-    options.restart = true;
-  }
+  biphasic::continue_in_restart_folder(parsed);
+  const std::string& out_dir = parsed.output_dir;
   const biphasic::Config config = biphasic::read_case_file(case_path, overrides);
   options.output_dir =
       out_dir.empty() ? biphasic::default_output_folder(case_path, overrides) : out_dir;

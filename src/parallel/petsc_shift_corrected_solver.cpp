@@ -174,20 +174,6 @@ PetscShiftCorrectedSolver* solver_of(SUNLinearSolver S) {
   return static_cast<PetscShiftCorrectedSolver*>(S->content);
 }
 
-/// No exception may cross SUNDIALS' C frames: one is kept in the stats (last_error) and
-/// reported as an unrecoverable failure.
-template <class Call>
-int guarded(LinearSolverStats* stats, Call&& call) noexcept {
-  try {
-    return call();
-  } catch (const std::exception& e) {
-    if (stats) stats->last_error = e.what();
-  } catch (...) {
-    if (stats) stats->last_error = "an exception of unknown type";
-  }
-  return SUNLS_PACKAGE_FAIL_UNREC;
-}
-
 }  // namespace
 
 LinearSolverPtr make_petsc_shift_corrected_solver(MPI_Comm comm, LinearSolverPtr inner,
@@ -202,10 +188,10 @@ LinearSolverPtr make_petsc_shift_corrected_solver(MPI_Comm comm, LinearSolverPtr
   S->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
   S->ops->initialize = [](SUNLinearSolver) { return 0; };
   S->ops->setup = [](SUNLinearSolver s, SUNMatrix A) {
-    return guarded(solver_of(s)->stats(), [&] { return solver_of(s)->setup(A); });
+    return guarded_solver_call(solver_of(s)->stats(), [&] { return solver_of(s)->setup(A); });
   };
   S->ops->solve = [](SUNLinearSolver s, SUNMatrix A, N_Vector x, N_Vector b, realtype) {
-    return guarded(solver_of(s)->stats(), [&] { return solver_of(s)->solve(A, x, b); });
+    return guarded_solver_call(solver_of(s)->stats(), [&] { return solver_of(s)->solve(A, x, b); });
   };
   S->ops->lastflag = [](SUNLinearSolver s) -> sunindextype { return solver_of(s)->last_flag(); };
   S->ops->free = [](SUNLinearSolver s) -> int {

@@ -12,7 +12,6 @@ once and leave the folder's files as they were. With --compare-fields EXE, field
 and (c) must agree with (a)'s too (compare_fields.cpp). Usage:
 restart_matches_uninterrupted.py BIPHASIC MPIEXEC N CASE T_STOP [--compare-fields EXE]
 """
-import csv
 import json
 import os
 import shutil
@@ -20,19 +19,7 @@ import subprocess
 import sys
 import tempfile
 
-
-def read_csv(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def largest_difference(a, b, keys):
-    worst = 0.0
-    for key in keys:
-        scale = max(abs(float(r[key])) for r in a) or 1.0
-        diff = max(abs(float(x[key]) - float(y[key])) for x, y in zip(a, b))
-        worst = max(worst, diff / scale)
-    return worst
+from run_matches_serial import largest_difference, read_csv
 
 
 def compare_csv(reference, run, name, keys, failures):

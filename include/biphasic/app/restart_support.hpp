@@ -15,6 +15,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/config.hpp"
 #include "biphasic/study/measures.hpp"
+#include "biphasic/time/time_integrator.hpp"
 
 namespace biphasic {
 
@@ -55,6 +56,9 @@ void record_restart(nlohmann::json& summary, const Checkpoint& c,
 
 /// The log line of a restart: "restart from PATH: output step k at t = T s".
 std::string restart_note(const Checkpoint& c, const std::string& path);
+
+/// One step's entry of the summary's "steps" list (and of the checkpoint's record).
+nlohmann::json step_record(const StepInfo& info);
 
 /// The line measures of one output as the summary's "outputs" entries record them (overshoot,
 /// undershoot and oscillation null where the measures are not defined).

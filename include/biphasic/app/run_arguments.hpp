@@ -22,4 +22,8 @@ struct RunArguments {
 RunArguments parse_run_arguments(const std::vector<std::string>& args,
                                  bool foreign_options = false);
 
+/// With --restart DIR: the run continues in DIR (output_dir = DIR, options.restart set).
+/// Throws std::invalid_argument if -o names another folder or --overwrite is given too.
+void continue_in_restart_folder(RunArguments& arguments);
+
 }  // namespace biphasic

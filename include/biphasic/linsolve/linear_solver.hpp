@@ -6,6 +6,7 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 
+#include <exception>
 #include <functional>
 #include <memory>
 #include <string>
@@ -46,6 +47,21 @@ struct ShiftedMatrixFamily {
   double setup_shift = 0.0;               ///< c of the matrix last set up [1/s]
   std::function<double()> current_shift;  ///< c of the system being solved [1/s]
 };
+
+/// Runs a set-up or solve of a SUNLinearSolver inside SUNDIALS' C frames, where no exception
+/// may pass: one is kept in `stats->last_error` (if stats) and reported as an unrecoverable
+/// package failure; otherwise the call's flag.
+template <class Call>
+int guarded_solver_call(LinearSolverStats* stats, Call&& call) noexcept {
+  try {
+    return call();
+  } catch (const std::exception& e) {
+    if (stats) stats->last_error = e.what();
+  } catch (...) {
+    if (stats) stats->last_error = "an exception of unknown type";
+  }
+  return SUNLS_PACKAGE_FAIL_UNREC;
+}
 
 /// Deleter for SUNLinearSolver handles.
 struct LinearSolverDeleter {
