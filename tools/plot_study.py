@@ -9,6 +9,11 @@ KIND:
   work           work-precision: discrepancy at the end against wall time and linear solves
   stability      first-step overshoot over (k, dt) per mesh with the line c dt / h^2 = 1/6
   remedies       cost of accuracy: refinement, GLS, graded mesh (study remedies)
+  fixed_tau      GLS with tau fixed at its dt = 6.4 s value against the paper's h^2/(4 k dt)
+                 (study gls_fixed_tau)
+  length         GLS element length h: circumradius, edges, volume diameter (study gls_length)
+  quadrature     4 against 27 quadrature points: line pressure and their difference
+                 (study gls_quadrature)
 
 Each writes PNG files (200 dpi) with a vector PDF beside each into OUT_DIR and prints their names.
 Figures are drawn at their printed width (7.2 in for two columns, 3.5 in for one).
@@ -38,6 +43,7 @@ def read_rows(dirs):
         with open(pathlib.Path(d) / "runs.csv") as f:
             for row in csv.DictReader(f):
                 row["_dir"] = pathlib.Path(d) / "runs" / row["run"]
+                row["_study"] = pathlib.Path(d)
                 rows.append(row)
     return rows
 
@@ -79,11 +85,21 @@ def axial_strain(z, uz):
 
 
 def reference_dir(row):
+    """The reference run a row was measured against. Its path in the table is relative to the
+    checkout that ran the study: tried under this checkout, then under the one holding the
+    study folder (<root>/results/studies/<study>), so that a study read from elsewhere finds
+    its reference cache too."""
     label = row.get("reference", "")
     if not label:
         return None
     path = pathlib.Path(label.split()[-1])
-    return path if path.is_absolute() else ROOT / path
+    if path.is_absolute():
+        return path
+    candidates = [ROOT / path]
+    study = row.get("_study")
+    if study is not None and len(pathlib.Path(study).resolve().parents) > 2:
+        candidates.append(pathlib.Path(study).resolve().parents[2] / path)
+    return next((c for c in candidates if c.is_dir()), candidates[0])
 
 
 def select(rows, **conds):
@@ -427,10 +443,173 @@ def remedies(rows, out):
     save(fig, out, "remedies_cost_of_accuracy.png")
 
 
+# ---- the paper's remaining experiments (studies gls_fixed_tau, gls_length, gls_quadrature) ----
+
+def overshoot_over_time(run_dir):
+    """(t, overshoot) at every output after t = 0, from the run's summary.json."""
+    outs = [o for o in json.loads((pathlib.Path(run_dir) / "summary.json").read_text())["outputs"]
+            if o["t"] > 0 and o.get("overshoot") is not None]
+    return [o["t"] for o in outs], [o["overshoot"] for o in outs]
+
+
+def fixed_tau(rows, out):
+    """The paper's tau_GLS = h^2/(4 k dt) against tau fixed at its dt = 6.4 s value (the
+    coefficient scaled by dt / 6.4 s): (a) the largest overshoot over the outputs and (b) the
+    discrepancy at the end against dt; (c) the pressure on the axis at the end and (d) the
+    overshoot over time of the fixed-tau runs. The fixed tau's run at dt = 6.4 s is the paper's
+    run at that step (sweep paper_tau), drawn in both series."""
+    done = [r for r in rows if r.get("status") == "completed"]
+    paper_runs = sorted(select(done, sweep="paper_tau"), key=lambda r: num(r, "dt"))
+    fixed = [r for r in done if r["sweep"].startswith("fixed_tau")]
+    fixed += [r for r in paper_runs if math.isclose(num(r, "dt"), 6.4)]
+    fixed.sort(key=lambda r: num(r, "dt"))
+    series = (("paper's τ = h²/(4kΔt)", paper_runs, dict(color="tab:blue", marker="o", ls="-")),
+              ("τ fixed at its Δt = 6.4 s value", fixed, dict(color="tab:red", marker="s", ls="--")))
+    fig, axes = plt.subplots(2, 2, figsize=(fs.DOUBLE, 5.4))
+    (a, b), (c, d) = axes
+    for ax, key, ylabel in ((a, "overshoot_max", "largest overshoot over the outputs [%]"),
+                            (b, "discrepancy", "discrepancy at t = 32 s [%]")):
+        for label, rs, style in series:
+            ax.plot([num(r, "dt") for r in rs], [100 * num(r, key) for r in rs], label=label,
+                    **style)
+        ax.axvline(6.4, color="grey", lw=0.8, ls=":")
+        ax.set_xscale("log")
+        ax.set_xlabel("time step Δt [s]"), ax.set_ylabel(ylabel)
+        ax.set_ylim(bottom=-0.03 * ax.get_ylim()[1])  # markers at zero stay visible
+        ax.grid(alpha=0.3, which="both")
+        plain_log_ticks(ax.xaxis)
+    a.text(6.4, a.get_ylim()[1] * 0.97, " the two τ agree", color="grey", fontsize=8,
+           ha="left", va="top")
+    a.set_title("overshoot")
+    b.set_title("error next to the drained faces")
+    a.legend(loc="center right")
+    pressure_panel(c, fixed, lambda r: f"Δt = {num(r, 'dt'):g} s", "τ fixed: pressure at t = 32 s")
+    c.legend(title="step", ncol=2)
+    for i, r in enumerate(fixed):
+        t, o = overshoot_over_time(r["_dir"])
+        d.plot(t, [100 * v for v in o], "o-", ms=2.5, color=f"C{i}", clip_on=False)
+    d.set_xlabel("time t [s]"), d.set_ylabel("overshoot on the axis [% of p_mid]")
+    d.set_title("τ fixed: overshoot over time (steps as in c)")
+    d.set_ylim(bottom=0)
+    d.grid(alpha=0.3)
+    fig.suptitle("GLS whose τ does not follow the time step: mesh 2, k = 1e-3 mm⁴/(N s), "
+                 "backward Euler, 1 % strain")
+    fs.letters(axes.flat)
+    save(fig, out, "gls_fixed_tau.png")
+
+
+LENGTHS = (  # (stabilisation.length, label), in the order of the coefficient's size on the
+    # paper's meshes (h enters c_e = h²/(4k) squared; "none" is a zero coefficient)
+    ("none", "none"), ("volume_diameter", "volume\ndiameter"), ("circumradius", "circum-\nradius"),
+    ("shortest_edge", "shortest\nedge"), ("longest_edge", "longest\nedge"))
+
+
+def length(rows, out):
+    """GLS with each choice of the element length h against no stabilisation, on meshes 1-3 at
+    each permeability: the largest overshoot over the outputs (log scale) and the discrepancy
+    at the end, one line per mesh across the choices of h."""
+    done = [r for r in rows if r.get("status") == "completed"]
+
+    def choice(r):
+        return "none" if r["stabilisation"] == "none" else r.get("param:stabilisation.length", "")
+
+    ks = sorted({num(r, "permeability") for r in done})
+    meshes = sorted({mesh_label(r) for r in done})
+    fig, axes = plt.subplots(2, len(ks), figsize=(fs.DOUBLE, 5.2), squeeze=False, sharex=True)
+    xs = range(len(LENGTHS))
+    for j, k in enumerate(ks):
+        for m, mesh in enumerate(meshes):
+            sel = {choice(r): r for r in done
+                   if math.isclose(num(r, "permeability"), k) and mesh_label(r) == mesh}
+            for i, (key, ylabel) in enumerate((("overshoot_max", "largest overshoot [%]"),
+                                              ("discrepancy", "discrepancy at t = 32 s [%]"))):
+                ys = [100 * num(sel[n], key) if n in sel else math.nan for n, _ in LENGTHS]
+                axes[i][j].plot(xs, ys, marker="osD"[m % 3], color=f"C{m}", label=mesh)
+                axes[i][j].set_ylabel(ylabel if j == 0 else "")
+        axes[0][j].set_title(f"k = {k:.0e} mm⁴/(N s)".replace("e-0", "e-"))
+    for ax in axes.flat:
+        ax.grid(alpha=0.3, which="both")
+        ax.set_xticks(list(xs), [lab for _, lab in LENGTHS])
+    for ax in axes[0]:
+        ax.set_yscale("log")
+        ax.set_ylim(5e-4, 20)
+        plain_log_ticks(ax.yaxis, minor_subs=())
+    top = max(ax.get_ylim()[1] for ax in axes[1])
+    for ax in axes[1]:
+        ax.set_ylim(0, top)
+        ax.set_xlabel("h in c_e = h²/(4k), smallest to largest")
+    axes[0][0].legend()
+    fig.suptitle("GLS element length h, backward Euler Δt = 6.4 s, 1 % strain "
+                 "(overshoot: largest over the outputs)")
+    fs.letters(axes.flat)
+    save(fig, out, "gls_length.png")
+
+
+def quadrature(rows, out):
+    """4 against 27 quadrature points: (a) the pressure on the axis at the end on mesh 2, with
+    and without GLS, and the reference; (b) the difference between the two rules at every
+    node of the line, relative to the largest pressure of the 4-point run, for every mesh and
+    stabilisation (log scale; zero differences, at the drained nodes, are left out)."""
+    done = [r for r in rows if r.get("status") == "completed"]
+
+    def points(r):
+        return int(float(r.get("param:quadrature.points") or 0))
+
+    pairs = {}
+    for r in done:
+        pairs.setdefault((mesh_label(r), r["stabilisation"]), {})[points(r)] = r
+    pairs = {key: v for key, v in sorted(pairs.items()) if 4 in v and 27 in v}
+    fig, (a, b) = plt.subplots(1, 2, figsize=(fs.DOUBLE, 3.2))
+    shown = "mesh 2" if any(m == "mesh 2" for m, _ in pairs) else next(iter(pairs))[0]
+    ref_row = None
+    for i, ((mesh, stab), v) in enumerate(pairs.items()):
+        if mesh != shown:
+            continue
+        z4, p4, _ = line_at(v[4]["_dir"])
+        z27, p27, _ = line_at(v[27]["_dir"])
+        colour = "tab:blue" if stab == "gls" else "tab:orange"
+        a.plot(z4, [x * 1e3 for x in p4], "-", color=colour, lw=1.2, label=f"{STAB[stab]}, 4 points")
+        a.plot(z27, [x * 1e3 for x in p27], "o", color=colour, mfc="none", ms=4.5, mew=0.8,
+               label=f"{STAB[stab]}, 27 points")
+        ref_row = v[4]
+    ref = reference_dir(ref_row) if ref_row else None
+    if ref and (ref / "line.csv").is_file():
+        z, p, _ = line_at(ref, num(ref_row, "t_end"))
+        a.plot(z, [x * 1e3 for x in p], "k--", lw=0.9, label="reference")
+    a.set_xlabel("z on the axis [mm]"), a.set_ylabel("pressure p [kPa]")
+    a.set_title(f"{shown}, t = 32 s")
+    a.grid(alpha=0.3)
+    a.legend(loc="lower center")
+    for i, ((mesh, stab), v) in enumerate(pairs.items()):
+        z4, p4, _ = line_at(v[4]["_dir"])
+        z27, p27, _ = line_at(v[27]["_dir"])
+        scale = max(abs(x) for x in p4) or 1.0
+        pts = [(z, abs(q - p) / scale) for z, p, q, zz in zip(z4, p4, p27, z27)
+               if math.isclose(z, zz, abs_tol=1e-9) and q != p]
+        mesh_no = int(mesh.split()[-1]) - 1 if mesh.startswith("mesh ") else i
+        b.semilogy([z for z, _ in pts], [d for _, d in pts],
+                   "-" if stab == "gls" else "--", marker="osD"[mesh_no % 3], ms=3,
+                   color=f"C{mesh_no}", label=f"{mesh}, {'GLS' if stab == 'gls' else 'none'}")
+    b.set_xlabel("z on the axis [mm]"), b.set_ylabel("|p₂₇ − p₄| / max p₄ [–]")
+    b.set_title("difference of the two rules, t = 32 s")
+    b.grid(alpha=0.3)
+    lo, hi = b.get_ylim()
+    b.set_ylim(lo, hi * 3e3)  # room for the legend
+    handles, labels = b.get_legend_handles_labels()
+    order = sorted(range(len(labels)), key=lambda i: (labels[i].endswith("none"), labels[i]))
+    b.legend([handles[i] for i in order], [labels[i] for i in order], ncol=2,
+             loc="upper center", handlelength=2.4)
+    fig.suptitle("quadrature: 4 points (degree 2) against 27 (degree 5), k = 1e-3 mm⁴/(N s), "
+                 "backward Euler Δt = 6.4 s")
+    fs.letters([a, b])
+    save(fig, out, "gls_quadrature.png")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["paper", "sensitivity", "work", "stability", "remedies"])
+    ap.add_argument("kind", choices=["paper", "sensitivity", "work", "stability", "remedies",
+                                     "fixed_tau", "length", "quadrature"])
     ap.add_argument("studies", nargs="+")
     ap.add_argument("-o", "--output", default=str(ROOT / "docs" / "figures" / "results"))
     args = ap.parse_args()

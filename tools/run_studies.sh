@@ -8,6 +8,8 @@
 #   SET = all: main + paper_figures_mesh4 (≈10 min), stability_map_mesh4 (≈20 min) and
 #         reference_check (≈15 min: the 3-D cross-check reference refined)
 #   SET = plots: only redraw figures and tables from the runs already done
+# The studies gls_fixed_tau, gls_length and gls_quadrature are run by tools/study.py on their
+# own (--skip-reference-check); their figures are drawn here when their tables exist.
 # Every study is measured against its default (axisymmetric) reference; only the studies in
 # `checked` also compute the 3-D cross-check reference (≈105 s per physical parameter set) and
 # fill discrepancy_check; the others run with --skip-reference-check.
@@ -39,5 +41,8 @@ for s in paper_figures paper_figures_mesh4; do have $s && paper+=("$res/$s"); do
 maps=()
 for m in 1 2 3 4; do have stability_map_mesh$m && maps+=("$res/stability_map_mesh$m"); done
 ((${#maps[@]})) && $py "$root/tools/plot_study.py" stability "${maps[@]}" -o "$fig"
+have gls_fixed_tau && $py "$root/tools/plot_study.py" fixed_tau "$res/gls_fixed_tau" -o "$fig"
+have gls_length && $py "$root/tools/plot_study.py" length "$res/gls_length" -o "$fig"
+have gls_quadrature && $py "$root/tools/plot_study.py" quadrature "$res/gls_quadrature" -o "$fig"
 $py "$root/tools/results_tables.py" "$res" > "$root/docs/results_tables.md"
 echo "figures: $fig; tables: docs/results_tables.md"
