@@ -44,5 +44,11 @@ for m in 1 2 3 4; do have stability_map_mesh$m && maps+=("$res/stability_map_mes
 have gls_fixed_tau && $py "$root/tools/plot_study.py" fixed_tau "$res/gls_fixed_tau" -o "$fig"
 have gls_length && $py "$root/tools/plot_study.py" length "$res/gls_length" -o "$fig"
 have gls_quadrature && $py "$root/tools/plot_study.py" quadrature "$res/gls_quadrature" -o "$fig"
+# The scene (mesh 2, conditions, loading) from one run that writes its mesh; `plots` redraws it
+# only when that run exists.
+scene="$root/results/scene_mesh2"
+if [[ $set_name != plots || -f $scene/summary.json ]]; then
+  $py "$root/tools/plot_scene.py" "$scene" -o "$fig/scene_mesh2.png"
+fi
 $py "$root/tools/results_tables.py" "$res" > "$root/docs/results_tables.md"
 echo "figures: $fig; tables: docs/results_tables.md"
