@@ -1115,6 +1115,9 @@ void check_model(const toml::table& root, const Config& config, Problems& proble
     problems.bad_value("mesh.source", shown_at(root, "mesh.source", "\"quarter_cylinder\""),
                        "model = " + model + " needs a section mesh: \"section\" or \"file\"");
   }
+  if (config.stabilisation.gls_quadrature == GlsQuadrature::OnePoint)
+    problems.bad_value("stabilisation.gls_quadrature", "\"one_point\"",
+                       "model = " + model + " integrates the GLS term with its full rule only");
   for (std::size_t i = 0; i < config.bcs.size(); ++i) {
     const BoundaryCondition& bc = config.bcs[i];
     const std::string entry = "boundary[" + std::to_string(i) + "]";

@@ -59,6 +59,12 @@ const Names<ElementLength>& element_length_names() {
   return names;
 }
 
+const Names<GlsQuadrature>& gls_quadrature_names() {
+  static const Names<GlsQuadrature> names{{"full", GlsQuadrature::Full},
+                                          {"one_point", GlsQuadrature::OnePoint}};
+  return names;
+}
+
 const Names<Integrator>& integrator_names() {
   static const Names<Integrator> names{
       {"backward_euler", Integrator::BackwardEuler},
@@ -550,8 +556,27 @@ std::vector<Key<Config>> build_global_keys() {
       "Element length h in the GLS parameter c_e = h^2 / (4 k).",
       [](auto& c) -> auto& { return c.stabilisation.length; }));
   keys.push_back(number_key<C>(
-      "stabilisation.scale", above(0), "", "Multiplier of the GLS parameter c_e (1 = standard).",
+      "stabilisation.scale", above(0), "",
+      "Multiplier of the stabilisation's coefficient, c_e or beta, through h^2 (1 = standard).",
       [](auto& c) -> auto& { return c.stabilisation.scale; }));
+  keys.push_back(choice_key<C>(
+      "stabilisation.gls_quadrature", gls_quadrature_names(),
+      "Quadrature of the GLS term (gls, gls_minimal): full (quadrature.points, the paper's) or "
+      "one_point (reduced: the centroid alone, every other term keeping the full rule; "
+      "tetrahedra only).",
+      [](auto& c) -> auto& { return c.stabilisation.gls_quadrature; }));
+  keys.push_back(number_key<C>(
+      "stabilisation.threshold", above(0), "",
+      "r* of gls_minimal and flux_perturbation_minimal: elements with k H_A time_step / h^2 >= "
+      "r* are left unstabilised, the others get the least coefficient that makes the first "
+      "backward-Euler step monotone (0.25: the published coefficients as k dt/h^2 -> 0).",
+      [](auto& c) -> auto& { return c.stabilisation.threshold; }));
+  keys.push_back(number_key<C>(
+      "stabilisation.time_step", at_least(0), "s",
+      "The step dt* that gls_minimal and flux_perturbation_minimal are sized for, frozen for "
+      "the whole run so that the residual is one function F(t, y, y') under BDF too; 0 (the "
+      "default) = time.dt.",
+      [](auto& c) -> auto& { return c.stabilisation.time_step; }));
 
   keys.push_back(integer_key<C>(
       "quadrature.points", Range{}, {1, 4, 5, 8, 27, 64, 125}, "Quadrature points per tetrahedron.",

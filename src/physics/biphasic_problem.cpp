@@ -136,10 +136,12 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
   const QuadratureRule rule = tet_quadrature(config.quadrature_points);
   for (const QuadraturePoint& qp : rule.points) point_p2_.push_back(p2_values(qp.xi));
   geometry_.resize(mesh.tets.size());
+  const bool one_point_gls = config.stabilisation.gls_quadrature == GlsQuadrature::OnePoint;
+  if (one_point_gls) gls_point_.resize(mesh.tets.size());
   const AnyStabilisation stabilisation = make_stabilisation(config.stabilisation.type);
   const bool sized = describe(stabilisation).sized_by_element;
-  gls_c_.assign(mesh.tets.size(), 0.0);
-  flux_beta_.assign(mesh.tets.size(), 0.0);
+  stabilisation_.resize(mesh.tets.size());
+  const StabilisationContext context = stabilisation_context(config.stabilisation, config.time.dt);
   // Material regions: each mesh region with a [[region]] entry gets its own laws; the others
   // use [material] (laws_[0]).
   std::vector<int> region_law(mesh.region_names.size(), 0);
@@ -183,6 +185,11 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
     for (int a = 0; a < 10; ++a) X.row(a) = node_vec(mesh, mesh.tets[e][a]).transpose();
     try {
       element_point_geometry(X, rule, geometry_[e]);
+      if (one_point_gls) {
+        std::vector<PointGeometry> centroid;
+        element_point_geometry(X, tet_quadrature(1), centroid);
+        gls_point_[e] = centroid.front();
+      }
     } catch (const std::domain_error& err) {
       throw std::runtime_error("element " + std::to_string(e) + ": " + err.what());
     }
@@ -191,18 +198,13 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
     if (sized) {
       const double h = element_length(x, config.stabilisation.length);
       // Each element's own material (c_e from its k(1), β from its H_A).
-      const ElementCoefficients c = element_coefficients(
-          stabilisation, config.stabilisation.scale * h * h, laws_of(static_cast<Index>(e)));
-      gls_c_[e] = c.gls_c;
-      flux_beta_[e] = c.flux_beta;
+      const MaterialLaws& laws = laws_of(static_cast<Index>(e));
+      stabilisation_.set(
+          e, element_coefficients(stabilisation, config.stabilisation.scale * h * h, laws, context),
+          laws);
     }
   }
-  // A term no element has is absent (has_gls(), has_flux_perturbation()).
-  auto absent = [](const std::vector<double>& v) {
-    return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
-  };
-  if (absent(gls_c_)) gls_c_.clear();
-  if (absent(flux_beta_)) flux_beta_.clear();
+  stabilisation_.finish();  // a term no element has is absent (has_gls(), ...)
   mean_length /= static_cast<double>(std::max<std::size_t>(1, mesh.tets.size()));
   if (!whole) mean_length = scope.mean_element_length;
   row_scale_u_ = HA * mean_length;
@@ -444,12 +446,14 @@ void BiphasicProblem::element(Index e, const double* y, const double* ydot, bool
                               ElementOutput& out) const {
   ElementVector ye, ydote;
   gather(e, y, ydot, ye, ydote);
-  const ElementCoefficients c{gls_coefficient(e), flux_perturbation(e), volume_rate_dt_};
+  const ElementCoefficients c =
+      stabilisation_.coefficients(static_cast<std::size_t>(e), volume_rate_dt_);
   const MaterialLaws& laws = laws_of(e);
   try {
     std::visit(
         [&](const auto& solid, const auto& permeability) {
-          biphasic_element(geometry_[e], solid, permeability, c, ye, ydote, with_jacobian, out);
+          biphasic_element(geometry_[e], solid, permeability, c, ye, ydote, with_jacobian, out,
+                           gls_point_.empty() ? nullptr : &gls_point_[e]);
         },
         laws.solid, laws.permeability);
   } catch (const std::domain_error& err) {
@@ -636,9 +640,9 @@ void BiphasicProblem::jacobian(double /*t*/, const double* y, const double* ydot
 double BiphasicProblem::gls_time_scale() const {
   // min_e c_e / H_A(e), each element with its own material's H_A.
   double time = 0.0;
-  if (gls_c_.empty()) return 0.0;
+  if (!has_gls()) return 0.0;
   for (const Index e : elements_) {
-    const double ce = gls_c_[static_cast<std::size_t>(e)];
+    const double ce = gls_coefficient(e);
     if (!(ce > 0.0)) continue;
     const double te = ce / laws_of(e).p_wave_modulus();
     if (time == 0.0 || te < time) time = te;

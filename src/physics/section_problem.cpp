@@ -117,8 +117,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   const AnyStabilisation stabilisation = make_stabilisation(config.stabilisation.type);
   const bool sized = describe(stabilisation).sized_by_element;
   geometry_.resize(num_elements);
-  gls_c_.assign(num_elements, 0.0);
-  flux_beta_.assign(num_elements, 0.0);
+  stabilisation_.resize(num_elements);
+  const StabilisationContext context = stabilisation_context(config.stabilisation, config.time.dt);
   double measure = 0.0, area = 0.0;
   for (std::size_t e = 0; e < num_elements; ++e) {
     const Tri6& tri = mesh.triangles[e];
@@ -136,17 +136,13 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     if (sized) {
       const double h = triangle_length(point(mesh, tri[0]), point(mesh, tri[1]),
                                        point(mesh, tri[2]), config.stabilisation.length);
-      const ElementCoefficients c = element_coefficients(
-          stabilisation, config.stabilisation.scale * h * h, laws_of(static_cast<Index>(e)));
-      gls_c_[e] = c.gls_c;
-      flux_beta_[e] = c.flux_beta;
+      const MaterialLaws& laws = laws_of(static_cast<Index>(e));
+      stabilisation_.set(
+          e, element_coefficients(stabilisation, config.stabilisation.scale * h * h, laws, context),
+          laws);
     }
   }
-  auto absent = [](const std::vector<double>& v) {
-    return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
-  };
-  if (absent(gls_c_)) gls_c_.clear();
-  if (absent(flux_beta_)) flux_beta_.clear();
+  stabilisation_.finish();  // a term no element has is absent (has_gls(), ...)
   // Mean depth of the measure: 1 mm in plane strain, 2πR̄ axisymmetric.
   const double depth = area > 0.0 ? measure / area : 1.0;
   row_scale_u_ = HA * depth;
@@ -401,7 +397,8 @@ void SectionProblem::element(Index e, const double* y, const double* ydot, bool 
     ye(s) = y[g];
     ydote(s) = ydot[g];
   }
-  const ElementCoefficients c{gls_coefficient(e), flux_perturbation(e), volume_rate_dt_};
+  const ElementCoefficients c =
+      stabilisation_.coefficients(static_cast<std::size_t>(e), volume_rate_dt_);
   const MaterialLaws& laws = laws_of(e);
   try {
     std::visit(
@@ -522,9 +519,10 @@ double SectionProblem::volume_change(const double* y) const {
 
 double SectionProblem::gls_time_scale() const {
   double time = 0.0;
-  for (std::size_t e = 0; e < gls_c_.size(); ++e) {
-    if (!(gls_c_[e] > 0.0)) continue;
-    const double te = gls_c_[e] / laws_of(static_cast<Index>(e)).p_wave_modulus();
+  for (Index e = 0; e < num_elements(); ++e) {
+    const double ce = gls_coefficient(e);
+    if (!(ce > 0.0)) continue;
+    const double te = ce / laws_of(e).p_wave_modulus();
     if (time == 0.0 || te < time) time = te;
   }
   return time;

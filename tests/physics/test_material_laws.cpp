@@ -87,6 +87,7 @@ void expect_second_order(const std::vector<std::pair<double, double>>& errors,
 struct Coefficients {
   ElementCoefficients c;
   const char* name;
+  bool gls_term = false;  ///< the GLS term is on at the test's state (c_e(J) > 0)
   friend void PrintTo(const Coefficients& x, std::ostream* os) { *os << x.name; }
 };
 class PermeabilityDerivative : public ::testing::TestWithParam<Coefficients> {};
@@ -102,19 +103,26 @@ TEST_P(PermeabilityDerivative, MissingDerivativeIsDetected) {
   const auto errors = block_errors(QuadraticPermeabilityWithoutDerivative{}, GetParam().c);
   EXPECT_GT(errors[2].second, 1e-3);  // p-u
   EXPECT_LT(errors[3].second, 1e-5);  // p-p does not involve dk/dJ
-  if (GetParam().c.gls_c != 0.0) {
+  if (GetParam().gls_term) {
     EXPECT_GT(errors[0].second, 1e-4) << "u-u";
   } else {
     EXPECT_LT(errors[0].second, 1e-5) << "u-u";
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Stabilisations, PermeabilityDerivative,
-                         ::testing::Values(Coefficients{{0.0, 0.0, 0.0}, "plain"},
-                                           Coefficients{{2.5, 0.0, 0.0}, "gls"},
-                                           Coefficients{{0.0, 0.35, 0.0}, "flux_perturbation"},
-                                           Coefficients{{2.5, 0.0, 5.0}, "gls_conservative"}),
-                         [](const auto& param_info) { return param_info.param.name; });
+INSTANTIATE_TEST_SUITE_P(
+    Stabilisations, PermeabilityDerivative,
+    ::testing::Values(Coefficients{{0.0, 0.0, 0.0}, "plain"},
+                      Coefficients{{2.5, 0.0, 0.0}, "gls", true},
+                      Coefficients{{0.0, 0.35, 0.0}, "flux_perturbation"},
+                      Coefficients{{2.5, 0.0, 5.0}, "gls_conservative", true},
+                      // need-following, k = 0.01 J²: c_e = 2.5/J² − 1 > 0, and
+                      // 2.5/J² − 10 < 0 (clipped); β = 0.35 − 0.1 J² > 0, 0.35 − J² < 0
+                      Coefficients{{2.5, 0.0, 0.0, 1.0, 0.0}, "gls_minimal", true},
+                      Coefficients{{2.5, 0.0, 0.0, 10.0, 0.0}, "gls_minimal_clipped"},
+                      Coefficients{{0.0, 0.35, 0.0, 0.0, 10.0}, "flux_minimal"},
+                      Coefficients{{0.0, 0.35, 0.0, 0.0, 100.0}, "flux_minimal_clipped"}),
+    [](const auto& param_info) { return param_info.param.name; });
 
 // Under an affine displacement J is the same at every quadrature point, so the GLS coefficient
 // h²/(4k(J)) of a strain-dependent law equals that of a constant law k = k(J) with c_e scaled by
@@ -271,7 +279,13 @@ TEST(StrainDependentPermeability, LaiMowValuesAndDerivative) {
 // The element Jacobian with each strain-dependent law, block by block against central
 // differences (the state's J lies in about [0.8, 1.2], far from phi0 = 0.2).
 TEST(StrainDependentPermeability, ElementJacobianMatchesCentralDifferences) {
-  const ElementCoefficients cases[] = {{0.0, 0.0, 0.0}, {2.5, 0.0, 0.0}, {0.0, 0.35, 0.0}};
+  // The last two: the need-following coefficients, on over the state's J (k(1) = 2e-3;
+  // c_e = 2.5 k(1)/k(J) − 0.1 and β = 0.35 − 10 k(J) stay positive).
+  const ElementCoefficients cases[] = {{0.0, 0.0, 0.0},
+                                       {2.5, 0.0, 0.0},
+                                       {0.0, 0.35, 0.0},
+                                       {2.5, 0.0, 0.0, 0.1, 0.0},
+                                       {0.0, 0.35, 0.0, 0.0, 10.0}};
   for (const ElementCoefficients& c : cases) {
     expect_second_order(block_errors(kHolmesMow, c), "holmes_mow");
     expect_second_order(block_errors(kExponential, c), "exponential");

@@ -150,7 +150,10 @@ const Case kCases[] = {{{0.0, 0.0, 0.0}, "plain"},
                        {{2.5, 0.0, 0.0}, "gls"},
                        {{0.0, 0.35, 0.0}, "flux_perturbation"},
                        {{2.5, 0.0, 0.4}, "gls, conservative rate"},
-                       {{0.0, 0.35, 0.4}, "flux_perturbation, conservative rate"}};
+                       {{0.0, 0.35, 0.4}, "flux_perturbation, conservative rate"},
+                       // need-following: c_e(J) = 2.5 k(1)/k(J) − 1, β(J) = 0.35 − 0.3 k(J), on
+                       {{2.5, 0.0, 0.0, 1.0, 0.0}, "gls_minimal"},
+                       {{0.0, 0.35, 0.0, 0.0, 0.3}, "flux_perturbation_minimal"}};
 
 void expect_consistent_jacobians(SectionModel model, const Eigen::Matrix<double, 6, 2>& X,
                                  double size, bool axis, const std::string& where) {

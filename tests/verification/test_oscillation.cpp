@@ -95,5 +95,46 @@ TEST(Oscillation, FirstStepOvershootAgainstR) {
               << sweep.level_threshold.at(s) << ")\n";
 }
 
+// The need-following options (gls_minimal, flux_perturbation_minimal) with h the shortest edge,
+// the layer thickness here, so that each element's r_e is the sweep's r. Below r* each raises
+// the step to s = r* (docs/formulation.md: s = r + γ/4, s = r + b): its overshoot is that of the
+// unstabilised step at r*, whatever r (measured: exactly for the flux perturbation, within
+// 0.3 % for GLS). Above r* it adds nothing: the unstabilised step itself.
+// r* above the column's own threshold (0.437) therefore gives a monotone first step at every r.
+TEST(Oscillation, NeedFollowingStabilisationRaisesTheStepToTheThreshold) {
+  const int nz = 10;
+  const std::string width = std::to_string(1.0 / nz);
+  Config base = read_case_file(case_path("oscillation", "oscillation.toml"),
+                               {"mesh.column.nz=" + std::to_string(nz),
+                                "mesh.column.width=" + width, "mesh.column.depth=" + width});
+  base.stabilisation.length = ElementLength::ShortestEdge;
+  const Mesh mesh = build_mesh(base, "");
+  auto overshoot = [&](const std::string& type, double threshold, double r) {
+    Config config = base;
+    config.stabilisation.type = type;
+    config.stabilisation.threshold = threshold;
+    return first_step_overshoot(mesh, config, r).vertices;
+  };
+  for (const double threshold : {0.3, 0.45}) {
+    const double at_threshold = overshoot("none", threshold, threshold);
+    for (const char* type : {"gls_minimal", "flux_perturbation_minimal"}) {
+      for (const double r : {0.001, 0.01, 0.1, 0.2}) {
+        const double x = overshoot(type, threshold, r);
+        std::cout << "  " << type << ", r* = " << threshold << ", r = " << r << ": " << x
+                  << " (none at r*: " << at_threshold << ", none at r: " << overshoot("none", 0, r)
+                  << ")\n";
+        if (threshold > 0.437) {
+          EXPECT_LT(x, 1e-3) << type << ", r = " << r;
+        } else {
+          EXPECT_NEAR(x, at_threshold, 0.01 * at_threshold) << type << ", r = " << r;
+        }
+      }
+      for (const double r : {0.5, 1.0})
+        EXPECT_EQ(overshoot(type, threshold, r), overshoot("none", threshold, r))
+            << type << ", r = " << r;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace biphasic::verification

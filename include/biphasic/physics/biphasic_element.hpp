@@ -34,7 +34,48 @@ struct ElementCoefficients {
   double flux_beta = 0.0;  ///< β = h²/(4 H_A) of the flux perturbation [mm⁴ N⁻¹]
   /// Δt [s] > 0: J̇ = (J − Jₙ)/Δt, uₙ = u − Δt u̇ (conservative); 0: J̇ = J F⁻ᵀ:∇₀u̇.
   double volume_rate_dt = 0.0;
+  /// Need-following GLS (gls_minimal): c_e(J) = max(0, gls_c k(1)/k(J) − gls_offset), the
+  /// offset H_A Δt* [MPa s] the unstabilised step's own share (docs/formulation.md).
+  double gls_offset = 0.0;
+  /// Need-following flux perturbation: β(J) = max(0, flux_beta − flux_offset k(J)), the offset
+  /// Δt* [s].
+  double flux_offset = 0.0;
 };
+
+/// The stabilising coefficients at one quadrature point and their derivatives in J.
+struct PointStabilisation {
+  double ce = 0.0;        ///< c_e(J) [MPa s]
+  double dce_dJ = 0.0;    ///< dc_e/dJ [MPa s]
+  double beta = 0.0;      ///< β(J) [mm⁴ N⁻¹]
+  double dbeta_dJ = 0.0;  ///< dβ/dJ [mm⁴ N⁻¹]
+};
+
+/// c_e(J) and β(J) of `c` at a point of permeability k = k(J), dk/dJ = dk_dJ, with k_ref = k(1)
+/// (unused without GLS). Each is clipped at zero, where its derivative vanishes; without
+/// offsets, c_e = gls_c k(1)/k(J) and β = flux_beta exactly.
+inline PointStabilisation point_stabilisation(const ElementCoefficients& c, double k_ref, double k,
+                                              double dk_dJ) {
+  PointStabilisation s;
+  if (c.gls_c != 0.0) {
+    const double unclipped = c.gls_c * (k_ref / k);
+    s.ce = unclipped - c.gls_offset;
+    if (s.ce > 0.0) {
+      s.dce_dJ = -unclipped * (dk_dJ / k);
+    } else {
+      s.ce = 0.0;
+    }
+  }
+  s.beta = c.flux_beta;
+  if (c.flux_offset != 0.0) {
+    s.beta = c.flux_beta - c.flux_offset * k;
+    if (s.beta > 0.0) {
+      s.dbeta_dJ = -c.flux_offset * dk_dJ;
+    } else {
+      s.beta = 0.0;
+    }
+  }
+  return s;
+}
 
 /// The paper's material: a Neo-Hookean skeleton with constant permeability.
 struct ElementParameters : ElementCoefficients {
@@ -50,29 +91,60 @@ struct ElementOutput {
 };
 
 /// Evaluates the residual and, if `with_jacobian`, both Jacobian blocks.
+/// With `gls_point` (the element's centroid, weight its one-point volume), the GLS term is
+/// integrated with that one point instead of `geometry`'s rule (stabilisation.gls_quadrature =
+/// "one_point"); every other term keeps the full rule.
 /// Throws std::domain_error if det F ≤ 0 at a quadrature point (or a law refuses J).
 template <SolidLaw Solid, PermeabilityLaw Permeability>
 void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& solid,
                       const Permeability& permeability, const ElementCoefficients& coefficients,
                       const ElementVector& y, const ElementVector& ydot, bool with_jacobian,
-                      ElementOutput& out);
+                      ElementOutput& out, const PointGeometry* gls_point = nullptr);
 
 /// The same for ElementParameters (Neo-Hookean, constant k).
 void biphasic_element(const std::vector<PointGeometry>& geometry, const ElementParameters& params,
                       const ElementVector& y, const ElementVector& ydot, bool with_jacobian,
                       ElementOutput& out);
 
+/// The GLS term ∫ c_e(J) J̇ (F⁻ᵀ : ∇₀f) of one point g alone (the one-point rule's centroid):
+/// its momentum rows and, with the Jacobian, their derivatives in u and u̇ (the same terms as
+/// in the kernel's loop). b = F⁻ᵀ∇₀N, L the velocity gradient, Jₙ and bₙ those of uₙ = u − Δt u̇
+/// in the conservative form.
+inline void add_centroid_gls_term(const PointGeometry& g, const ShapeGradients& b, const Mat3& L,
+                                  double J, double Jdot, double Jn, const ShapeGradients& bn_prev,
+                                  bool conservative, double dt_c, const PointStabilisation& stab,
+                                  bool with_jacobian, ElementOutput& out) {
+  const double w = g.weight;
+  const double ce = stab.ce;
+  if (ce == 0.0) return;
+  for (int a = 0; a < 10; ++a)
+    for (int i = 0; i < 3; ++i) out.residual(3 * a + i) += w * ce * Jdot * b(a, i);
+  if (!with_jacobian) return;
+  const ShapeGradients dJdot = conservative ? ShapeGradients((J * b - Jn * bn_prev) / dt_c)
+                                            : ShapeGradients(J * (L.trace() * b - b * L));
+  const double Jv = conservative ? Jn : J;
+  const ShapeGradients& bv = conservative ? bn_prev : b;
+  for (int a = 0; a < 10; ++a)
+    for (int bn = 0; bn < 10; ++bn)
+      for (int i = 0; i < 3; ++i)
+        for (int kk = 0; kk < 3; ++kk) {
+          out.dfdy(3 * a + i, 3 * bn + kk) +=
+              w * (ce * (-b(a, kk) * b(bn, i) * Jdot + b(a, i) * dJdot(bn, kk)) +
+                   stab.dce_dJ * J * Jdot * b(a, i) * b(bn, kk));
+          out.dfdydot(3 * a + i, 3 * bn + kk) += w * ce * Jv * b(a, i) * bv(bn, kk);
+        }
+}
+
 template <SolidLaw Solid, PermeabilityLaw Permeability>
 void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& solid,
                       const Permeability& permeability, const ElementCoefficients& coefficients,
                       const ElementVector& y, const ElementVector& ydot, bool with_jacobian,
-                      ElementOutput& out) {
+                      ElementOutput& out, const PointGeometry* gls_point) {
   using Mat4x3 = Eigen::Matrix<double, 4, 3>;
   // GLS: c_e(J) = h²/(4 k(J)) = c_e,ref k(1)/k(J) at each quadrature point (docs/formulation.md,
   // "GLS with a strain-dependent permeability"); for a constant k the ratio is exactly 1.
   const double ce_ref = coefficients.gls_c;
   const double k_ref = ce_ref != 0.0 ? permeability.permeability(1.0) : 0.0;
-  const double beta_f = coefficients.flux_beta;
   const double dt_c = coefficients.volume_rate_dt;
   const bool conservative = dt_c > 0.0;
 
@@ -88,7 +160,11 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
     out.dfdydot.setZero();
   }
 
-  for (const PointGeometry& g : geometry) {
+  // The rule's points, then (with gls_point) the centroid, which carries the GLS term alone.
+  const std::size_t points = geometry.size() + (gls_point ? 1 : 0);
+  for (std::size_t q = 0; q < points; ++q) {
+    const bool gls_only = q == geometry.size();
+    const PointGeometry& g = gls_only ? *gls_point : geometry[q];
     const Mat3 F = Mat3::Identity() + u * g.dN;  // F_iJ = δ_iJ + Σ_a u_ai ∂N_a/∂X_J
     const Mat3 Fdot = v * g.dN;
     const double J = checked_jacobian(F);
@@ -102,16 +178,25 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
     const Mat3 L = Fdot * Finv;               // velocity gradient
     const double divv = L.trace();
     const double k = permeability.permeability(J);
-    const double ce = ce_ref != 0.0 ? ce_ref * (k_ref / k) : 0.0;
+    const double dk_dJ = with_jacobian ? permeability.permeability_derivative(J) : 0.0;
+    PointStabilisation stab = point_stabilisation(coefficients, k_ref, k, dk_dJ);
+    if (gls_point && !gls_only) stab.ce = stab.dce_dJ = 0.0;  // GLS at the centroid only
+    const double ce = stab.ce;
+    const double beta_f = stab.beta;
     // Conservative form: the previous state uₙ = u − Δt u̇, Jₙ = det Fₙ, bₙ = F⁻ᵀₙ∇₀N.
     double Jn = 0.0;
-    ShapeGradients bn_prev;
+    ShapeGradients bn_prev = ShapeGradients::Zero();  // set below in the conservative form
     if (conservative) {
       const Mat3 Fn = Mat3::Identity() + (u - dt_c * v) * g.dN;
       Jn = checked_jacobian(Fn);
       if (with_jacobian) bn_prev = g.dN * Fn.inverse();
     }
     const double Jdot = conservative ? (J - Jn) / dt_c : J * divv;
+    if (gls_only) {
+      add_centroid_gls_term(g, b, L, J, Jdot, Jn, bn_prev, conservative, dt_c, stab, with_jacobian,
+                            out);
+      continue;
+    }
     // Stress and tangent of the mixture: the solid's P_eff − pJF⁻ᵀ.
     const auto stress = solid.response(F, J).with_pore_pressure(pq * J);
     const Mat3 P = stress.first_piola(F, FinvT);
@@ -172,12 +257,12 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
         out.dfdydot(30 + c, 30 + d) += w * beta_f * ee;
       }
     }
-    // k = k(J): the Darcy term J k (e_c·∇ₓp) gains J (e_c·∇ₓp) dk/dJ ∂J/∂u_bk, ∂J/∂u_bk = J b_bk;
-    // the GLS term c_e(J) J̇ b_ai gains dc_e/dJ J̇ b_ai J b_bk, dc_e/dJ = −c_e (dk/dJ)/k.
-    const double dk_dJ = permeability.permeability_derivative(J);
+    // k = k(J): the Darcy term J k (e_c·∇ₓp) gains J (e_c·∇ₓp) dk/dJ ∂J/∂u_bk, ∂J/∂u_bk = J b_bk,
+    // and the flux perturbation J β(J) (e_c·∇ₓṗ) gains J (e_c·∇ₓṗ) dβ/dJ J b_bk; the GLS term
+    // c_e(J) J̇ b_ai gains dc_e/dJ J̇ b_ai J b_bk (point_stabilisation).
     if (dk_dJ != 0.0) {
-      if (ce != 0.0) {
-        const double s = -w * ce * (dk_dJ / k) * J * Jdot;
+      if (stab.dce_dJ != 0.0) {
+        const double s = w * stab.dce_dJ * J * Jdot;
         for (int a = 0; a < 10; ++a)
           for (int i = 0; i < 3; ++i)
             for (int bn = 0; bn < 10; ++bn)
@@ -185,7 +270,8 @@ void biphasic_element(const std::vector<PointGeometry>& geometry, const Solid& s
                 out.dfdy(3 * a + i, 3 * bn + kk) += s * b(a, i) * b(bn, kk);
       }
       for (int c = 0; c < 4; ++c) {
-        const double s = w * J * J * dk_dJ * e.row(c).dot(gp);
+        double s = w * J * J * dk_dJ * e.row(c).dot(gp);
+        if (stab.dbeta_dJ != 0.0) s += w * J * J * stab.dbeta_dJ * e.row(c).dot(gpdot);
         for (int bn = 0; bn < 10; ++bn)
           for (int kk = 0; kk < 3; ++kk) out.dfdy(30 + c, 3 * bn + kk) += s * b(bn, kk);
       }

@@ -19,6 +19,7 @@
 #include "biphasic/physics/biphasic_element.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
+#include "biphasic/physics/element_stabilisation.hpp"
 #include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
 
@@ -126,9 +127,13 @@ class BiphasicProblem final : public BiphasicModel {
   /// Load-curve kinks of every boundary condition (sorted, unique) [s].
   std::vector<double> breakpoints() const override;
   /// c_e = scale · h_e² / (4k) of element e (0 without GLS) [MPa s].
-  double gls_coefficient(Index e) const override { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
+  double gls_coefficient(Index e) const override {
+    return stabilisation_.gls_coefficient(static_cast<std::size_t>(e));
+  }
   /// β = scale · h_e² / (4 H_A) of the flux perturbation (0 without it) [mm⁴ N⁻¹].
-  double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
+  double flux_perturbation(Index e) const {
+    return stabilisation_.flux_perturbation(static_cast<std::size_t>(e));
+  }
 
   /// Approximation of the Schur-complement coupling −A_pu A_uu⁻¹ A_up of a matrix
   /// dF/dy + c_j dF/dẏ whose displacement rows carry the GLS term with shift `cj_gls`:
@@ -144,8 +149,8 @@ class BiphasicProblem final : public BiphasicModel {
   /// Oedometric modulus H_A of the solid law at small strain (λ + 2μ for Neo-Hookean) [MPa]; with
   /// several regions the largest of their H_A (the stiffest material sets the force scale).
   double oedometric_modulus() const { return modulus_; }
-  bool has_gls() const override { return !gls_c_.empty(); }
-  bool has_flux_perturbation() const override { return !flux_beta_.empty(); }
+  bool has_gls() const override { return stabilisation_.has_gls(); }
+  bool has_flux_perturbation() const override { return stabilisation_.has_flux_perturbation(); }
   /// Smallest GLS relaxation time min_e c_e / H_A over the elements [s] (0 without GLS).
   double gls_time_scale() const override;
   /// Sizes of the solution the data imply over the run [mm], [MPa]: the largest prescribed
@@ -209,14 +214,14 @@ class BiphasicProblem final : public BiphasicModel {
   double modulus_ = 0.0;         ///< largest H_A over laws_ [MPa]
   double volume_rate_dt_ = 0.0;  ///< ElementCoefficients::volume_rate_dt [s]
   std::vector<std::vector<PointGeometry>> geometry_;
+  std::vector<PointGeometry> gls_point_;  ///< per element: the GLS term's centroid (one_point)
   std::vector<Eigen::Matrix<double, 10, 1>> point_p2_;  ///< P2 values at the rule's points
   RigidPlatens platens_;  ///< before pattern_: the pattern holds their couplings
   VolumeLoads loads_;
   DirichletFields dirichlet_fields_;
   std::vector<double> load_cache_;  ///< add_volume_loads at load_cache_t_ (empty = stale)
   double load_cache_t_ = 0.0;
-  std::vector<double> gls_c_;
-  std::vector<double> flux_beta_;
+  ElementStabilisation stabilisation_;
   SparsityPattern pattern_;
   std::vector<std::vector<Index>> colours_;  ///< elements sharing no node, per colour
   /// Per-thread residual accumulators: the residual loop runs over all elements at once (two

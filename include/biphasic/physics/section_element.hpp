@@ -76,7 +76,6 @@ void section_element(const std::vector<SectionPointGeometry>& geometry, const So
   constexpr int nu = 12;
   const double ce_ref = coefficients.gls_c;
   const double k_ref = ce_ref != 0.0 ? permeability.permeability(1.0) : 0.0;
-  const double beta_f = coefficients.flux_beta;
   const double dt_c = coefficients.volume_rate_dt;
   const bool conservative = dt_c > 0.0;
 
@@ -131,7 +130,10 @@ void section_element(const std::vector<SectionPointGeometry>& geometry, const So
     const Vec3 gp = e.transpose() * p;
     const Vec3 gpdot = e.transpose() * pdot;
     const double k = permeability.permeability(J);
-    const double ce = ce_ref != 0.0 ? ce_ref * (k_ref / k) : 0.0;
+    const double dk_dJ = with_jacobian ? permeability.permeability_derivative(J) : 0.0;
+    const PointStabilisation stab = point_stabilisation(coefficients, k_ref, k, dk_dJ);
+    const double ce = stab.ce;
+    const double beta_f = stab.beta;
     double Jn = 0.0;
     Mat3 Fn_inv = Mat3::Zero();
     if (conservative) {
@@ -199,15 +201,16 @@ void section_element(const std::vector<SectionPointGeometry>& geometry, const So
         out.dfdydot(nu + c, nu + dd) += w * beta_f * ee;
       }
     }
-    // k = k(J): ∂k/∂u_f = dk/dJ J β_f in the Darcy term and in c_e(J) = c_e,ref k(1)/k(J).
-    const double dk_dJ = permeability.permeability_derivative(J);
+    // k = k(J): ∂k/∂u_f = dk/dJ J β_f in the Darcy term, and likewise through c_e(J) and β(J)
+    // (point_stabilisation) in the GLS and flux-perturbation terms.
     if (dk_dJ != 0.0) {
-      if (ce != 0.0)
-        out.dfdy.topLeftCorner<nu, nu>() -=
-            (w * ce * (dk_dJ / k) * J * Jdot) * beta * beta.transpose();
-      for (int c = 0; c < 3; ++c)
-        out.dfdy.block<1, nu>(nu + c, 0) +=
-            (w * J * J * dk_dJ * e.row(c).dot(gp)) * beta.transpose();
+      if (stab.dce_dJ != 0.0)
+        out.dfdy.topLeftCorner<nu, nu>() += (w * stab.dce_dJ * J * Jdot) * beta * beta.transpose();
+      for (int c = 0; c < 3; ++c) {
+        double s = w * J * J * dk_dJ * e.row(c).dot(gp);
+        if (stab.dbeta_dJ != 0.0) s += w * J * J * stab.dbeta_dJ * e.row(c).dot(gpdot);
+        out.dfdy.block<1, nu>(nu + c, 0) += s * beta.transpose();
+      }
     }
   }
 }

@@ -26,6 +26,7 @@
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
+#include "biphasic/physics/element_stabilisation.hpp"
 #include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/physics/section_element.hpp"
 #include "biphasic/time/semidiscrete_system.hpp"
@@ -98,16 +99,20 @@ class SectionProblem final : public BiphasicModel {
   double volume_change(const double* y) const override;
   Index num_elements() const override { return static_cast<Index>(mesh_.triangles.size()); }
 
-  double gls_coefficient(Index e) const override { return gls_c_.empty() ? 0.0 : gls_c_[e]; }
-  double flux_perturbation(Index e) const { return flux_beta_.empty() ? 0.0 : flux_beta_[e]; }
+  double gls_coefficient(Index e) const override {
+    return stabilisation_.gls_coefficient(static_cast<std::size_t>(e));
+  }
+  double flux_perturbation(Index e) const {
+    return stabilisation_.flux_perturbation(static_cast<std::size_t>(e));
+  }
   /// As BiphasicProblem::pressure_schur_term, with the P1 triangle mass matrices of the measure.
   void pressure_schur_term(double cj, double cj_gls, std::vector<PressureEntry>& out) const;
   SaddlePointStructure saddle_point_structure(
       std::function<std::pair<double, double>()> shifts) const override;
 
   double oedometric_modulus() const { return modulus_; }
-  bool has_gls() const override { return !gls_c_.empty(); }
-  bool has_flux_perturbation() const override { return !flux_beta_.empty(); }
+  bool has_gls() const override { return stabilisation_.has_gls(); }
+  bool has_flux_perturbation() const override { return stabilisation_.has_flux_perturbation(); }
   double gls_time_scale() const override;
   std::pair<double, double> solution_scales() const override { return solution_scales_; }
   AssemblyStats& stats() override { return stats_; }
@@ -143,7 +148,7 @@ class SectionProblem final : public BiphasicModel {
   double modulus_ = 0.0;
   double volume_rate_dt_ = 0.0;
   std::vector<std::vector<SectionPointGeometry>> geometry_;
-  std::vector<double> gls_c_, flux_beta_;
+  ElementStabilisation stabilisation_;
   RigidPlatens platens_;  ///< before pattern_: the pattern holds their couplings
   SparsityPattern pattern_;
   std::vector<Dirichlet> dirichlet_;

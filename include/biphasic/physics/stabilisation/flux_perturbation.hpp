@@ -17,7 +17,8 @@ struct FluxPerturbation {
             "2008)",
             true};
   }
-  static ElementCoefficients coefficients(double h2, const MaterialLaws& laws) {
+  static ElementCoefficients coefficients(double h2, const MaterialLaws& laws,
+                                          const StabilisationContext& /*context*/) {
     ElementCoefficients c;
     c.flux_beta = h2 / (4.0 * laws.p_wave_modulus());
     return c;

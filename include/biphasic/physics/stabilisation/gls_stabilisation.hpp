@@ -16,7 +16,8 @@ struct GlsStabilisation {
   static StabilisationDescription describe() {
     return {"gls", "Galerkin least squares, c_e = scale h^2/(4 k(J)) (the paper's)", true};
   }
-  static ElementCoefficients coefficients(double h2, const MaterialLaws& laws) {
+  static ElementCoefficients coefficients(double h2, const MaterialLaws& laws,
+                                          const StabilisationContext& /*context*/) {
     ElementCoefficients c;
     c.gls_c = h2 / (4.0 * laws.reference_permeability());
     return c;

@@ -10,7 +10,8 @@ namespace biphasic {
 
 struct NoStabilisation {
   static StabilisationDescription describe() { return {"none", "plain Galerkin P2/P1", false}; }
-  static ElementCoefficients coefficients(double /*h2*/, const MaterialLaws& /*laws*/) {
+  static ElementCoefficients coefficients(double /*h2*/, const MaterialLaws& /*laws*/,
+                                          const StabilisationContext& /*context*/) {
     return {};
   }
 };

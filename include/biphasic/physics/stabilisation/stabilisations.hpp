@@ -11,13 +11,17 @@
 #include <vector>
 
 #include "biphasic/physics/stabilisation/flux_perturbation.hpp"
+#include "biphasic/physics/stabilisation/flux_perturbation_minimal.hpp"
+#include "biphasic/physics/stabilisation/gls_minimal.hpp"
 #include "biphasic/physics/stabilisation/gls_stabilisation.hpp"
 #include "biphasic/physics/stabilisation/no_stabilisation.hpp"
+#include "biphasic/physics/stabilisation/stabilisation_config.hpp"
 
 namespace biphasic {
 
 /// Every stabilisation the solver can run; the first is the default.
-using AnyStabilisation = std::variant<NoStabilisation, GlsStabilisation, FluxPerturbation>;
+using AnyStabilisation = std::variant<NoStabilisation, GlsStabilisation, FluxPerturbation,
+                                      GlsMinimal, FluxPerturbationMinimal>;
 
 /// The descriptions of the registered stabilisations, in registration order.
 inline const std::vector<StabilisationDescription>& stabilisation_descriptions() {
@@ -52,11 +56,18 @@ inline StabilisationDescription describe(const AnyStabilisation& s) {
   return std::visit([](const auto& x) { return x.describe(); }, s);
 }
 
+/// The context of the case's [stabilisation] section: its threshold, and its time_step or, if
+/// that is 0, the run's step `dt` [s].
+inline StabilisationContext stabilisation_context(const StabilisationConfig& config, double dt) {
+  return {config.threshold, config.time_step > 0.0 ? config.time_step : dt};
+}
+
 /// The per-element coefficients `s` gives an element of squared length h2 [mm²] and material
 /// `laws`.
 inline ElementCoefficients element_coefficients(const AnyStabilisation& s, double h2,
-                                                const MaterialLaws& laws) {
-  return std::visit([&](const auto& x) { return x.coefficients(h2, laws); }, s);
+                                                const MaterialLaws& laws,
+                                                const StabilisationContext& context) {
+  return std::visit([&](const auto& x) { return x.coefficients(h2, laws, context); }, s);
 }
 
 }  // namespace biphasic
