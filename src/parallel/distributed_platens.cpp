@@ -1,5 +1,6 @@
 #include "biphasic/parallel/distributed_platens.hpp"
 
+#include <stdexcept>
 #include <unordered_map>
 
 #include "biphasic/parallel/petsc_check.hpp"
@@ -45,7 +46,11 @@ void DistributedPlatens::bind(const PartitionedNumbering& numbering, const Subdo
   std::size_t at = 0;
   for (const RigidPlaten& p : platens_.platens())
     for (Index dof : p.dofs) held_whole[static_cast<std::size_t>(dof)] = held_any[at++] ? 1 : 0;
-  platens_.check_free(held_whole, 3, bcs);
+  try {
+    platens_.check_free(held_whole, 3, bcs);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // bad input: exit status 1, as in one process
+  }
 
   std::unordered_map<Index, Index> master_of;  // whole-system tied unknown → its u_m
   for (std::size_t k = 0; k < parts_.size(); ++k) {

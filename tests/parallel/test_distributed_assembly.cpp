@@ -11,6 +11,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "../common/box_mesh.hpp"
@@ -214,6 +215,26 @@ INSTANTIATE_TEST_SUITE_P(Conditions, DistributedAssemblyTest, ::testing::Values(
                          [](const ::testing::TestParamInfo<bool>& param) {
                            return param.param ? "RigidPlaten" : "EveryCondition";
                          });
+
+TEST(DistributedPlatens, AHeldPlatenNodeIsRefusedAsInOneProcess) {
+  // z1 held along y meets the platen on y1 along y: the edge's nodes cannot move with it.
+  const Mesh mesh = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
+  Config cfg = test_config(true);
+  cfg.bcs.push_back({BcType::Displacement, "z1", 1, 0.0, {}, ""});
+  std::string serial;
+  try {
+    BiphasicProblem whole(mesh, cfg);
+  } catch (const std::runtime_error& e) {
+    serial = e.what();
+  }
+  ASSERT_NE(serial.find("is also held along the platen's component"), std::string::npos) << serial;
+  try {
+    DistributedAssembly dist(mesh, cfg, PETSC_COMM_WORLD);
+    FAIL() << "no refusal";
+  } catch (const std::invalid_argument& e) {  // bad input on every process, worded alike
+    EXPECT_EQ(std::string(e.what()), serial);
+  }
+}
 
 TEST(CollectiveFailure, AFailureOnTheLastProcessReachesEveryProcess) {
   int rank = 0, size = 1;

@@ -52,8 +52,8 @@ class DistributedPlatens {
 
   /// Binds the platens to this process's part: `dofs` and `held` (the Dirichlet flags of the
   /// part's problem) of the part, `row_scale` = s [N/mm]. Collective. Throws
-  /// std::runtime_error, alike on every process and worded as in one process, if a Dirichlet
-  /// condition holds a platen unknown.
+  /// std::invalid_argument, alike on every process and worded as in one process, if a
+  /// Dirichlet condition holds a platen unknown.
   void bind(const PartitionedNumbering& numbering, const SubdomainDofs& dofs,
             const std::vector<char>& held, double row_scale,
             const std::vector<BoundaryCondition>& bcs, MPI_Comm comm);
