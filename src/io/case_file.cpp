@@ -1141,7 +1141,9 @@ void check_model(const toml::table& root, const Config& config, Problems& proble
 }
 
 /// The iterative solver's block preconditioner treats every tied row as a Dirichlet row and has
-/// no place for a platen's force row: rigid platens need a direct solver.
+/// no place for a platen's force row (dense over the platen's neighbourhood, it would sit in the
+/// displacement block's multigrid): rigid platens need a direct solver, on any number of
+/// processes.
 void check_platen_solver(const toml::table& root, const Config& config, Problems& problems) {
   if (problems.is_bad("linear_solver.type") ||
       config.linear_solver.type != LinearSolverType::Iterative)
@@ -1152,7 +1154,8 @@ void check_platen_solver(const toml::table& root, const Config& config, Problems
                          shown_at(root, "linear_solver.type", "\"iterative\""),
                          "boundary[" + std::to_string(i) +
                              "] is a rigid_platen, which needs a direct solver (\"klu\", "
-                             "\"umfpack\" or \"mumps\")");
+                             "\"umfpack\" or \"mumps\"; on several processes \"mumps\" or "
+                             "\"superlu_dist\")");
       return;
     }
 }

@@ -62,20 +62,36 @@ DistributedAssembly::DistributedAssembly(const Mesh& mesh, const Config& config,
   const MeshPartition partition = shared_partition(mesh, comm);
   numbering_ = number_unknowns(mesh, partition);
   petsc_index(numbering_.size());
-  if (rank_ == 0 && config.linear_solver.ordering == Ordering::Metis)
-    fill_order_ = unknown_order(numbering_, nested_dissection_node_order(mesh));
   run_collectively(comm, [&] {
+    platens_ = std::make_unique<DistributedPlatens>(mesh, config);
     sub_ = extract_subdomain(mesh, partition, rank_);
-    problem_ = std::make_unique<BiphasicProblem>(sub_.mesh, config, subdomain_scope(mesh, sub_));
+    AssemblyScope scope = subdomain_scope(mesh, sub_);
+    if (!platens_->empty()) scope.platens = &platens_->platens();
+    problem_ = std::make_unique<BiphasicProblem>(sub_.mesh, config, std::move(scope));
     dofs_ = std::make_unique<SubdomainDofs>(sub_, numbering_, problem_->pattern(),
                                             problem_->constrained());
   });
+  platens_->bind(numbering_, *dofs_, problem_->constrained(), problem_->stiffness_scale(),
+                 config.bcs, comm);
+  entries_ = platens_->entries(dofs_->entries(), problem_->pattern());
+  if (rank_ == 0 && config.linear_solver.ordering == Ordering::Metis) {
+    // Each platen's master node last, as one process orders it: its force row is dense over
+    // the platen's neighbourhood, and eliminating it early would fill that neighbourhood.
+    std::vector<Index> nodes = nested_dissection_node_order(mesh);
+    std::vector<Index> masters;
+    for (const RigidPlaten& p : platens_->platens().platens()) masters.push_back(p.master_node);
+    std::erase_if(nodes, [&](Index n) {
+      return std::find(masters.begin(), masters.end(), n) != masters.end();
+    });
+    nodes.insert(nodes.end(), masters.begin(), masters.end());
+    fill_order_ = unknown_order(numbering_, nodes);
+  }
   const auto n = static_cast<std::size_t>(problem_->size());
   y_.resize(n);
   ydot_.resize(n);
   F_.resize(n);
   values_.resize(static_cast<std::size_t>(problem_->pattern().nnz()));
-  coo_values_.resize(dofs_->entries().size());
+  coo_values_.resize(entries_.size());
 
   std::vector<PetscInt> global(n);
   for (std::size_t i = 0; i < n; ++i) global[i] = petsc_index(dofs_->global(static_cast<Index>(i)));
@@ -108,7 +124,7 @@ Mat DistributedAssembly::new_matrix() const {
   petsc_check(MatCreate(comm_, &J), "MatCreate");
   petsc_check(MatSetSizes(J, m, m, N, N), "MatSetSizes");
   petsc_check(MatSetType(J, MATAIJ), "MatSetType");
-  const auto& entries = dofs_->entries();
+  const auto& entries = entries_;
   // PETSc may reorder the index arrays it is given: pass copies.
   std::vector<PetscInt> rows(entries.size()), cols(entries.size());
   for (std::size_t k = 0; k < entries.size(); ++k) {
@@ -148,11 +164,13 @@ void DistributedAssembly::residual(double t, Vec y, Vec ydot, Vec F) {
   to_local(ydot, ydot_);
   run_collectively(comm_, [&] { problem_->residual(t, y_.data(), ydot_.data(), F_.data()); });
   add_from_local(F);
+  platens_->residual(t, y, F);
 }
 
 void DistributedAssembly::time_derivative(double t, Vec dFdt) {
   problem_->time_derivative(t, F_.data());
   add_from_local(dFdt);
+  platens_->time_derivative(t, dFdt);
 }
 
 void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate) {
@@ -163,13 +181,17 @@ void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J, 
     problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data(),
                        rate ? rate_values_.data() : nullptr);
   });
-  const auto& entries = dofs_->entries();
-  for (std::size_t k = 0; k < entries.size(); ++k)
-    coo_values_[k] = values_[static_cast<std::size_t>(entries[k].position)];
+  // A platen's tie entries carry their constant s or −s, in dF/dẏ 0.
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    const ContributedEntry& e = entries_[k];
+    coo_values_[k] = e.position >= 0 ? values_[static_cast<std::size_t>(e.position)] : e.constant;
+  }
   petsc_check(MatSetValuesCOO(J, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
   if (!rate) return;
-  for (std::size_t k = 0; k < entries.size(); ++k)
-    coo_values_[k] = rate_values_[static_cast<std::size_t>(entries[k].position)];
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    const ContributedEntry& e = entries_[k];
+    coo_values_[k] = e.position >= 0 ? rate_values_[static_cast<std::size_t>(e.position)] : 0.0;
+  }
   petsc_check(MatSetValuesCOO(rate, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
 }
 
@@ -191,6 +213,7 @@ void DistributedAssembly::apply_dirichlet(double t, Vec y, Vec ydot) const {
   }
   VecRestoreArray(y, &a);
   if (ydot) VecRestoreArray(ydot, &b);
+  platens_->apply(y, ydot);
 }
 
 }  // namespace biphasic

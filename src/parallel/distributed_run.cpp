@@ -23,6 +23,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "biphasic/io/output_folder.hpp"
+#include "biphasic/io/platen_csv.hpp"
 #include "biphasic/io/reaction_csv.hpp"
 #include "biphasic/parallel/collective_failure.hpp"
 #include "biphasic/parallel/distributed_system.hpp"
@@ -316,7 +317,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
 
     std::unique_ptr<ProbeRecorder> probes;
     std::unique_ptr<ReactionCsv> reaction_csv;
+    std::unique_ptr<PlatenCsv> platen_csv;
     std::unique_ptr<FieldWriter> fields;
+    const RigidPlatens& platens = assembly.platens().platens();  // the whole mesh's
     run_collectively(comm, [&] {
       if (!root) return;
       std::vector<Probe> lines;
@@ -334,6 +337,18 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         const std::string path = (out_dir / "reactions.csv").string();
         if (keep) keep_csv_rows_until(path, *keep);
         reaction_csv = std::make_unique<ReactionCsv>(path, keep.has_value());
+      }
+      if (!platens.empty()) {  // as one process records them, unknowns in its layout
+        const std::string path = (out_dir / "platens.csv").string();
+        if (keep) keep_csv_rows_until(path, *keep);
+        platen_csv = std::make_unique<PlatenCsv>(path, keep.has_value());
+        nlohmann::json list = nlohmann::json::array();
+        for (const RigidPlaten& platen : platens.platens())
+          list.push_back({{"boundary", platen.boundary},
+                          {"component", platen.component},
+                          {"area", platen.area},
+                          {"unknown", platen.master}});
+        summary["platens"] = list;
       }
       if (!config.output.fields.empty())
         fields = keep ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, *keep,
@@ -478,6 +493,17 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         if (!root) return;
         m = probes->write(t, u, p);
         if (fields) fields->write(t, u, p, cells);
+        if (platen_csv) {
+          nlohmann::json r = nlohmann::json::object();
+          for (std::size_t k = 0; k < platens.platens().size(); ++k) {
+            const RigidPlaten& platen = platens.platens()[k];
+            const double w = u[static_cast<std::size_t>(platen.master)];
+            const double force = platens.force(k, t);
+            platen_csv->write(t, platen.boundary, w, force);
+            r[platen.boundary] = {{"displacement", w}, {"force", force}};
+          }
+          o["platens"] = r;
+        }
         if (m) o.update(measures_json(*m));  // the entry a one-process run records
         summary["outputs"].push_back(o);
       });

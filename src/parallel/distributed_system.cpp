@@ -50,7 +50,7 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
       for (Index q = pattern.colptr()[static_cast<std::size_t>(j)];
            q < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++q)
         column_of_[static_cast<std::size_t>(q)] = j;
-    values_.resize(assembly.dofs().entries().size());
+    values_.resize(assembly.entries().size());
     if (SUNContext_Create(nullptr, &ctx_) != 0)
       throw std::runtime_error("SUNContext_Create failed");
     petsc_check(VecCreateMPIWithArray(assembly.comm(), 1, static_cast<PetscInt>(system.size()),
@@ -86,6 +86,8 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
     });
   }
   double a0_diagonal(Index i) const override {
+    const DistributedPlatens& platens = assembly_.platens();
+    if (!platens.empty() && platens.tied()[static_cast<std::size_t>(i)]) return platens.row_scale();
     const Index l = assembly_.dofs().owned()[static_cast<std::size_t>(i)];
     return a0_[static_cast<std::size_t>(assembly_.local_problem().pattern().find(l, l))];
   }
@@ -96,8 +98,13 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
     const Index nu = local.num_u();
     const std::vector<char>& fixed = local.constrained();
     const auto& rows = local.pattern().rowind();
-    const auto& entries = assembly_.dofs().entries();
+    const auto& entries = assembly_.entries();
     for (std::size_t k = 0; k < entries.size(); ++k) {
+      if (entries[k].position < 0) {  // a platen's tie row: s or −s in A0, nothing in R
+        values_[k] = rule(true, true, true, entries[k].constant, 0.0);
+        continue;
+      }
+      // A tie row's entry moved to the force row keeps its own row's kind: a free momentum row.
       const auto q = static_cast<std::size_t>(entries[k].position);
       const Index i = rows[q], j = column_of_[q];
       values_[k] = rule(i < nu, j < nu, fixed[static_cast<std::size_t>(i)] != 0, a0_[q], r_[q]);
@@ -160,6 +167,11 @@ DistributedSystem::DistributedSystem(DistributedAssembly& assembly) : assembly_(
   const std::vector<char>& local = assembly.local_problem().constrained();
   for (Index i : assembly.dofs().owned())
     constrained_.push_back(local[static_cast<std::size_t>(i)]);
+  // The unknowns tied to a rigid platen's master are constrained as in one process.
+  const DistributedPlatens& platens = assembly.platens();
+  if (!platens.empty())
+    for (std::size_t k = 0; k < constrained_.size(); ++k)
+      if (platens.tied()[k]) constrained_[k] = 1;
   for (Vec* v : {&y_, &ydot_, &F_})
     petsc_check(VecCreateMPIWithArray(assembly.comm(), 1, static_cast<PetscInt>(size()),
                                       static_cast<PetscInt>(assembly.global_size()), nullptr, v),

@@ -111,13 +111,14 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
     : mesh_(mesh),
       curves_(config.curves),
       laws_{make_material_laws(config.material)},
-      platens_(mesh, config, curves_),
+      platens_(scope.platens ? RigidPlatens() : RigidPlatens(mesh, config, curves_)),
       pattern_(mesh, platens_.couplings()),
       colours_(colour_elements(mesh)) {
   const bool whole = scope.whole_mesh();
   if (!whole && !platens_.empty())
     throw std::runtime_error(
-        "rigid_platen: not available on a partitioned mesh (run on one process)");
+        "rigid_platen: a part of a partitioned mesh cannot pose platens of its own (the caller "
+        "poses the whole mesh's: AssemblyScope::platens)");
   for (Index e = 0; e < static_cast<Index>(mesh.tets.size()); ++e)
     if (whole || scope.element_owned[static_cast<std::size_t>(e)]) elements_.push_back(e);
   if (!whole) {
@@ -293,7 +294,11 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
         nodal_loads_.push_back(std::move(nl));
         break;
       }
-      case BcType::RigidPlaten:  // platens_
+      case BcType::RigidPlaten:  // platens_, or the caller's (scope.platens): reaction rows
+        if (scope.platens) {
+          std::vector<Index>& held = held_rows_[bc.boundary];
+          for (Index n : nodes) held.push_back(pattern_.u_dof(n, bc.component));
+        }
         break;
     }
   }
@@ -305,6 +310,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
   solution_scales_ = data_scales(extent, config, modulus_);
   if (!platens_.empty())
     platens_.raise_solution_scales(config, modulus_, extent.data(), solution_scales_);
+  if (scope.platens)
+    scope.platens->raise_solution_scales(config, modulus_, extent.data(), solution_scales_);
   for (auto& [name, rows] : held_rows_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());

@@ -117,10 +117,8 @@ std::vector<NodeCoupling> RigidPlatens::couplings() const {
   return out;
 }
 
-std::vector<char> RigidPlatens::tie(const std::vector<char>& held, const SparsityPattern& pattern,
-                                    double row_scale, const std::vector<BoundaryCondition>& bcs,
-                                    std::map<std::string, std::vector<Index>>& held_rows) {
-  const int components = pattern.components();
+void RigidPlatens::check_free(const std::vector<char>& held, int components,
+                              const std::vector<BoundaryCondition>& bcs) const {
   for (const RigidPlaten& p : platens_)
     for (Index dof : p.dofs)
       if (held[static_cast<std::size_t>(dof)])
@@ -129,6 +127,12 @@ std::vector<char> RigidPlatens::tie(const std::vector<char>& held, const Sparsit
             std::to_string(dof / components) +
             " is also held along the platen's component by a displacement or symmetry condition "
             "(or the axis); a rigid platen's nodes move with the platen");
+}
+
+std::vector<char> RigidPlatens::tie(const std::vector<char>& held, const SparsityPattern& pattern,
+                                    double row_scale, const std::vector<BoundaryCondition>& bcs,
+                                    std::map<std::string, std::vector<Index>>& held_rows) {
+  check_free(held, pattern.components(), bcs);
   bind(pattern, row_scale);
   std::vector<char> constrained = held;
   for (const RigidPlaten& p : platens_) {

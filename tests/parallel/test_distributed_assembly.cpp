@@ -1,13 +1,17 @@
 // The distributed assembly on 1, 2 or 3 MPI processes (ctest label mpi): the residual, ∂F/∂t
-// and Jacobian assembled into PETSc objects, row by row against the one-process problem of the
-// whole mesh (every process computes that independently), the ghost exchange against the
-// whole-mesh state, the Dirichlet values, and a failure on one process reaching all.
+// and Jacobian (dF/dy + c_j dF/dẏ and dF/dẏ) assembled into PETSc objects, row by row against
+// the one-process problem of the whole mesh (every process computes that independently), the
+// ghost exchange against the whole-mesh state, the Dirichlet values and constrained flags, and a
+// failure on one process reaching all; each with every condition, and with the displaced face a
+// rigid platen instead (its force row summed across the processes, its tie rows).
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "../common/box_mesh.hpp"
@@ -18,11 +22,20 @@
 namespace biphasic {
 namespace {
 
-class DistributedAssemblyTest : public ::testing::Test {
+/// every_condition(), with `platen` also a rigid platen along y on y1 under a ramped force: a
+/// face the parts share, whose nodes carry a traction and a flux and meet displacement,
+/// symmetry and drained faces.
+Config test_config(bool platen) {
+  Config cfg = test::every_condition();
+  if (platen) cfg.bcs.push_back({BcType::RigidPlaten, "y1", 1, -0.02, {}, "ramp"});
+  return cfg;
+}
+
+class DistributedAssemblyTest : public ::testing::TestWithParam<bool> {
  protected:
   void SetUp() override {
     mesh_ = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
-    config_ = test::every_condition();
+    config_ = test_config(GetParam());
     whole_ = std::make_unique<BiphasicProblem>(mesh_, config_);
     dist_ = std::make_unique<DistributedAssembly>(mesh_, config_, PETSC_COMM_WORLD);
     // Serial unknown of each rank-major unknown.
@@ -69,7 +82,7 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-TEST_F(DistributedAssemblyTest, GhostExchangeGivesEveryLocalUnknownItsValue) {
+TEST_P(DistributedAssemblyTest, GhostExchangeGivesEveryLocalUnknownItsValue) {
   std::vector<double> local;
   dist_->to_local(y_vec_, local);
   const SubdomainDofs& dofs = dist_->dofs();
@@ -78,7 +91,7 @@ TEST_F(DistributedAssemblyTest, GhostExchangeGivesEveryLocalUnknownItsValue) {
               y_[static_cast<std::size_t>(serial_of(dofs.global(i)))]);
 }
 
-TEST_F(DistributedAssemblyTest, ResidualAndTimeDerivativeMatchTheWholeMesh) {
+TEST_P(DistributedAssemblyTest, ResidualAndTimeDerivativeMatchTheWholeMesh) {
   const auto n = static_cast<std::size_t>(whole_->size());
   std::vector<double> F(n), dFdt(n);
   whole_->residual(kTime, y_.data(), ydot_.data(), F.data());
@@ -101,60 +114,126 @@ TEST_F(DistributedAssemblyTest, ResidualAndTimeDerivativeMatchTheWholeMesh) {
   VecDestroy(&dv);
 }
 
-TEST_F(DistributedAssemblyTest, JacobianMatchesTheWholeMesh) {
+TEST_P(DistributedAssemblyTest, JacobianMatchesTheWholeMesh) {
   const double cj = 2.5;
   const SparsityPattern& pattern = whole_->pattern();
-  std::vector<double> values(static_cast<std::size_t>(pattern.nnz()));
-  whole_->jacobian(kTime, y_.data(), ydot_.data(), cj, values.data());
-  const double scale = max_abs(values);
-  // Rows of the whole matrix, by serial row: column → value.
-  std::vector<std::map<Index, double>> rows(static_cast<std::size_t>(pattern.size()));
-  for (Index j = 0; j < pattern.size(); ++j)
-    for (Index k = pattern.colptr()[static_cast<std::size_t>(j)];
-         k < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++k)
-      rows[static_cast<std::size_t>(pattern.rowind()[static_cast<std::size_t>(k)])][j] =
-          values[static_cast<std::size_t>(k)];
-  Mat J = dist_->new_matrix();
+  std::vector<double> values(static_cast<std::size_t>(pattern.nnz())), rates(values.size());
+  whole_->jacobian(kTime, y_.data(), ydot_.data(), cj, values.data(), rates.data());
+  Mat J = dist_->new_matrix(), R = dist_->new_matrix();
   // Twice: the second assembly must replace the first's values, not add to them.
-  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J);
-  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J);
-  for (Index k = 0; k < dist_->owned_size(); ++k) {
-    const auto row = static_cast<PetscInt>(dist_->first_owned() + k);
-    const std::map<Index, double>& expected = rows[static_cast<std::size_t>(serial_of(row))];
-    PetscInt ncols = 0;
-    const PetscInt* cols = nullptr;
-    const PetscScalar* vals = nullptr;
-    MatGetRow(J, row, &ncols, &cols, &vals);
-    std::map<Index, double> got;
-    for (PetscInt c = 0; c < ncols; ++c) got[serial_of(cols[c])] = vals[c];
-    MatRestoreRow(J, row, &ncols, &cols, &vals);
-    for (const auto& [col, v] : expected) {
-      const auto it = got.find(col);
-      ASSERT_NEAR(it == got.end() ? 0.0 : it->second, v, 1e-12 * scale)
-          << "serial entry (" << serial_of(row) << ", " << col << ")";
-    }
-    for (const auto& [col, v] : got)
-      if (!expected.count(col)) {
-        ASSERT_EQ(v, 0.0) << "outside the pattern: " << col;
+  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J, R);
+  dist_->jacobian(kTime, y_vec_, ydot_vec_, cj, J, R);
+  for (auto [matrix, serial] : {std::pair{J, &values}, std::pair{R, &rates}}) {
+    const double scale = max_abs(*serial);
+    // Rows of the whole matrix, by serial row: column → value.
+    std::vector<std::map<Index, double>> rows(static_cast<std::size_t>(pattern.size()));
+    for (Index j = 0; j < pattern.size(); ++j)
+      for (Index k = pattern.colptr()[static_cast<std::size_t>(j)];
+           k < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++k)
+        rows[static_cast<std::size_t>(pattern.rowind()[static_cast<std::size_t>(k)])][j] =
+            (*serial)[static_cast<std::size_t>(k)];
+    for (Index k = 0; k < dist_->owned_size(); ++k) {
+      const auto row = static_cast<PetscInt>(dist_->first_owned() + k);
+      const std::map<Index, double>& expected = rows[static_cast<std::size_t>(serial_of(row))];
+      PetscInt ncols = 0;
+      const PetscInt* cols = nullptr;
+      const PetscScalar* vals = nullptr;
+      MatGetRow(matrix, row, &ncols, &cols, &vals);
+      std::map<Index, double> got;
+      for (PetscInt c = 0; c < ncols; ++c) got[serial_of(cols[c])] = vals[c];
+      MatRestoreRow(matrix, row, &ncols, &cols, &vals);
+      const char* which = matrix == J ? "dF/dy + cj dF/dydot" : "dF/dydot";
+      for (const auto& [col, v] : expected) {
+        const auto it = got.find(col);
+        ASSERT_NEAR(it == got.end() ? 0.0 : it->second, v, 1e-12 * scale)
+            << which << ", serial entry (" << serial_of(row) << ", " << col << ")";
       }
+      for (const auto& [col, v] : got)
+        if (!expected.count(col)) {
+          ASSERT_EQ(v, 0.0) << which << ", outside the pattern: " << col;
+        }
+    }
   }
   MatDestroy(&J);
+  MatDestroy(&R);
 }
 
-TEST_F(DistributedAssemblyTest, DirichletValuesMatchTheWholeMesh) {
-  Vec y = dist_->new_vector(), ydot = dist_->new_vector();
-  VecSet(y, 9.0);
-  VecSet(ydot, 9.0);
-  dist_->apply_dirichlet(kTime, y, ydot);
-  const PetscScalar* a = nullptr;
-  VecGetArrayRead(y, &a);
+TEST_P(DistributedAssemblyTest, PlatenIsTheWholeMeshsOne) {
+  // The master, unknowns and area of the one-process platen; the tied unknowns constrained.
+  const RigidPlatens& mine = dist_->platens().platens();
+  const RigidPlatens& serial = whole_->platens();
+  ASSERT_EQ(mine.platens().size(), serial.platens().size());
+  ASSERT_EQ(mine.empty(), !GetParam());
+  for (std::size_t k = 0; k < mine.platens().size(); ++k) {
+    EXPECT_EQ(mine.platens()[k].master, serial.platens()[k].master);
+    EXPECT_EQ(mine.platens()[k].dofs, serial.platens()[k].dofs);
+    EXPECT_EQ(mine.platens()[k].area, serial.platens()[k].area);
+  }
+  const std::vector<char>& tied = dist_->platens().tied();
+  if (GetParam()) {
+    // The platen spans the parts: its force row sums rows of several processes.
+    int here = std::count(tied.begin(), tied.end(), 1) > 0 ? 1 : 0, owners = 0, size = 1;
+    MPI_Allreduce(&here, &owners, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD);
+    MPI_Comm_size(PETSC_COMM_WORLD, &size);
+    EXPECT_GE(owners, std::min(size, 2)) << "processes owning tied unknowns";
+  }
+  const std::vector<char>& local = dist_->local_problem().constrained();
   for (Index k = 0; k < dist_->owned_size(); ++k) {
     const auto s = static_cast<std::size_t>(serial_of(dist_->first_owned() + k));
-    EXPECT_EQ(a[k], whole_->constrained()[s] ? y_[s] : 9.0) << "serial unknown " << s;
+    const Index l = dist_->dofs().owned()[static_cast<std::size_t>(k)];
+    const bool constrained = local[static_cast<std::size_t>(l)] != 0 ||
+                             (!tied.empty() && tied[static_cast<std::size_t>(k)] != 0);
+    EXPECT_EQ(constrained, whole_->constrained()[s] != 0) << "serial unknown " << s;
+  }
+}
+
+TEST_P(DistributedAssemblyTest, DirichletValuesMatchTheWholeMesh) {
+  // Free entries 9 (a platen's master too, so its tied entries become 9), rates 0.5.
+  const auto n = static_cast<std::size_t>(whole_->size());
+  std::vector<double> ys(n, 9.0), ydots(n, 0.5);
+  whole_->apply_dirichlet(kTime, ys.data(), ydots.data());
+  Vec y = dist_->new_vector(), ydot = dist_->new_vector();
+  VecSet(y, 9.0);
+  VecSet(ydot, 0.5);
+  dist_->apply_dirichlet(kTime, y, ydot);
+  const PetscScalar* a = nullptr;
+  const PetscScalar* b = nullptr;
+  VecGetArrayRead(y, &a);
+  VecGetArrayRead(ydot, &b);
+  for (Index k = 0; k < dist_->owned_size(); ++k) {
+    const auto s = static_cast<std::size_t>(serial_of(dist_->first_owned() + k));
+    EXPECT_EQ(a[k], ys[s]) << "serial unknown " << s;
+    EXPECT_EQ(b[k], ydots[s]) << "serial rate " << s;
   }
   VecRestoreArrayRead(y, &a);
+  VecRestoreArrayRead(ydot, &b);
   VecDestroy(&y);
   VecDestroy(&ydot);
+}
+
+INSTANTIATE_TEST_SUITE_P(Conditions, DistributedAssemblyTest, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& param) {
+                           return param.param ? "RigidPlaten" : "EveryCondition";
+                         });
+
+TEST(DistributedPlatens, AHeldPlatenNodeIsRefusedAsInOneProcess) {
+  // z1 held along y meets the platen on y1 along y: the edge's nodes cannot move with it.
+  const Mesh mesh = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
+  Config cfg = test_config(true);
+  cfg.bcs.push_back({BcType::Displacement, "z1", 1, 0.0, {}, ""});
+  std::string serial;
+  try {
+    BiphasicProblem whole(mesh, cfg);
+  } catch (const std::runtime_error& e) {
+    serial = e.what();
+  }
+  ASSERT_NE(serial.find("is also held along the platen's component"), std::string::npos) << serial;
+  try {
+    DistributedAssembly dist(mesh, cfg, PETSC_COMM_WORLD);
+    FAIL() << "no refusal";
+  } catch (const std::invalid_argument& e) {  // bad input on every process, worded alike
+    EXPECT_EQ(std::string(e.what()), serial);
+  }
 }
 
 TEST(CollectiveFailure, AFailureOnTheLastProcessReachesEveryProcess) {

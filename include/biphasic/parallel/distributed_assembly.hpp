@@ -7,7 +7,8 @@
 // process owns one contiguous range, displacements interlaced per node. A residual or Jacobian is
 // assembled by each process on its own elements with the one-process element kernels; PETSc adds
 // the parts' contributions (a reverse scatter for the residual, the COO interface for the matrix,
-// whose pattern is set once).
+// whose pattern is set once). Rigid platens are then posed on the summed rows
+// (parallel/distributed_platens.hpp).
 #pragma once
 
 #include <petscmat.h>
@@ -19,6 +20,7 @@
 #include "biphasic/assembly/subdomain_dofs.hpp"
 #include "biphasic/io/config.hpp"
 #include "biphasic/mesh/partition.hpp"
+#include "biphasic/parallel/distributed_platens.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 
 namespace biphasic {
@@ -45,6 +47,11 @@ class DistributedAssembly {
   /// This process's problem on its part of the mesh.
   BiphasicProblem& local_problem() { return *problem_; }
   const SubdomainDofs& dofs() const { return *dofs_; }
+  /// The rigid platens of the whole mesh, posed on the summed system.
+  const DistributedPlatens& platens() const { return *platens_; }
+  /// The matrix entries this process contributes (the pattern handed to PETSc, in the order of
+  /// the values given to MatSetValuesCOO).
+  const std::vector<ContributedEntry>& entries() const { return entries_; }
   /// On process 0 with linear_solver.ordering = "metis": the unknowns in the nested-dissection
   /// order of the whole mesh (mesh/nested_dissection.hpp), for the direct solver; elsewhere
   /// empty.
@@ -62,7 +69,8 @@ class DistributedAssembly {
   void jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate = nullptr);
   /// ∂F/∂t of the whole system into dFdt. Collective.
   void time_derivative(double t, Vec dFdt);
-  /// Sets the constrained entries of y (and of ẏ unless null) to their prescribed values.
+  /// Sets the constrained entries of y (and of ẏ unless null) to their prescribed values (a
+  /// platen's tied entries to its master's). Collective.
   void apply_dirichlet(double t, Vec y, Vec ydot) const;
 
   /// The local unknowns' values of a global vector (ghosts included), in the local problem's
@@ -77,8 +85,10 @@ class DistributedAssembly {
   int rank_ = 0;
   PartitionedNumbering numbering_;
   Subdomain sub_;
+  std::unique_ptr<DistributedPlatens> platens_;  ///< before problem_, which sees its platens
   std::unique_ptr<BiphasicProblem> problem_;
   std::unique_ptr<SubdomainDofs> dofs_;
+  std::vector<ContributedEntry> entries_;
   std::vector<Index> fill_order_;
   VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
   Vec local_ = nullptr;           ///< sequential work vector in the local layout

@@ -7,7 +7,9 @@
 //   full;
 // - the rows of Dirichlet conditions only for the unknowns it owns.
 // Its scales (Dirichlet row scales, tolerances, solution scales) come from the whole mesh, so
-// that every part writes the same rows the same way.
+// that every part writes the same rows the same way. Rigid platens are posed on the summed
+// system by the caller (parallel/distributed_platens.hpp): a part treats their unknowns as
+// ordinary momentum unknowns.
 #pragma once
 
 #include <vector>
@@ -17,12 +19,19 @@
 
 namespace biphasic {
 
+class RigidPlatens;
+
 struct AssemblyScope {
   std::vector<char> element_owned;   ///< per tetrahedron: its integrals are assembled here
   std::vector<char> node_owned;      ///< per node: its face loads are added here
   double mean_element_length = 0.0;  ///< mean volume diameter over the whole mesh [mm]
   Point lower{}, upper{};            ///< bounding box of the whole mesh [mm]
   std::vector<char> region_used;     ///< per region name: some element of the whole mesh has it
+  /// The rigid platens of the whole mesh when the caller poses them on the summed system
+  /// (needed only during construction). The part then neither ties nor sums their rows; it takes
+  /// from them the solution scales, and each platen's unknowns on the part as the reaction rows
+  /// of its boundary. Null: no platens, or (whole mesh) the problem poses its own.
+  const RigidPlatens* platens = nullptr;
   /// The default scope: the whole mesh, assembled in one process.
   bool whole_mesh() const { return element_owned.empty(); }
 };

@@ -37,7 +37,8 @@ class BiphasicProblem final : public BiphasicModel {
   /// every quadrature point at t = 0 and t = time.t_end). Throws std::runtime_error naming the
   /// boundary condition or the formula on inconsistent input. With a `scope`, the mesh is one
   /// part's view of a partitioned mesh and the problem assembles that part's share
-  /// (physics/assembly_scope.hpp); rigid platens are then refused.
+  /// (physics/assembly_scope.hpp); rigid platens are then posed by the caller on the summed
+  /// system (scope.platens), and refused without it.
   BiphasicProblem(const Mesh& mesh, const Config& config, AssemblyScope scope = {});
   /// The problem keeps a reference to its mesh: a temporary mesh would dangle.
   BiphasicProblem(Mesh&&, const Config&, AssemblyScope = {}) = delete;

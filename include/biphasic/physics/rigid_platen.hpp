@@ -60,6 +60,10 @@ class RigidPlatens {
   /// The pattern couplings the platens need (master node ↔ neighbourhood).
   std::vector<NodeCoupling> couplings() const;
 
+  /// Throws std::runtime_error naming the platen's condition and the node if `held` (one flag
+  /// per unknown, `components` displacement unknowns per node) flags a platen unknown.
+  void check_free(const std::vector<char>& held, int components,
+                  const std::vector<BoundaryCondition>& bcs) const;
   /// Ties the platens into a problem once its Dirichlet rows are known (`held` flags their
   /// unknowns): checks that no platen unknown is held (else std::runtime_error naming the
   /// platen's condition and the node), binds the positions in `pattern` (built with couplings();
