@@ -550,7 +550,7 @@ def quadrature(rows, out):
     and without GLS, and the reference; (b) the difference between the two rules at every
     node of the line, relative to the largest pressure of the 4-point run, for every mesh and
     stabilisation (log scale; zero differences, at the drained nodes, are left out)."""
-    done = [r for r in rows if r.get("status") == "completed"]
+    done = [r for r in rows if r.get("status") == "completed" and r.get("sweep") == "points"]
 
     def points(r):
         return int(float(r.get("param:quadrature.points") or 0))
@@ -605,11 +605,44 @@ def quadrature(rows, out):
     save(fig, out, "gls_quadrature.png")
 
 
+def one_point(rows, out):
+    """The GLS term integrated with its full rule against the centroid alone (sweep
+    gls_one_point of the quadrature study): the largest overshoot over the outputs (log scale)
+    and the discrepancy at the end against the mesh, one line per permeability and rule."""
+    done = [r for r in rows if r.get("status") == "completed" and r.get("sweep") == "gls_one_point"]
+    ks = sorted({num(r, "permeability") for r in done})
+    meshes = sorted({int(float(r["param:mesh"])) for r in done})
+    fig, axes = plt.subplots(1, 2, figsize=(fs.DOUBLE, 2.8))
+    for j, k in enumerate(ks):
+        for rule, style in (("full", "-"), ("one_point", "--")):
+            sel = {int(float(r["param:mesh"])): r for r in done
+                   if math.isclose(num(r, "permeability"), k)
+                   and r.get("param:stabilisation.gls_quadrature") == rule}
+            label = f"k = {k:.0e}, {'4 points' if rule == 'full' else 'one point'}".replace(
+                "e-0", "e-")
+            for ax, key in zip(axes, ("overshoot_max", "discrepancy")):
+                ys = [100 * num(sel[m], key) if m in sel else math.nan for m in meshes]
+                ax.plot(meshes, ys, style, marker="os"[j % 2], color=f"C{j}", label=label,
+                        fillstyle="full" if rule == "full" else "none")
+    axes[0].set_yscale("log")
+    axes[0].set_ylabel("largest overshoot [%]")
+    axes[1].set_ylabel("discrepancy at t = 32 s [%]")
+    axes[1].set_ylim(bottom=0)
+    for ax in axes:
+        ax.set_xticks(meshes, [f"mesh {m}" for m in meshes])
+        ax.grid(alpha=0.3, which="both")
+    axes[1].legend()
+    fig.suptitle("The paper's GLS term with 4 points and with the centroid alone "
+                 "(other terms: 4 points), Δt = 6.4 s, 1 % strain")
+    fs.letters(axes.flat)
+    save(fig, out, "gls_one_point.png")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("kind", choices=["paper", "sensitivity", "work", "stability", "remedies",
-                                     "fixed_tau", "length", "quadrature"])
+                                     "fixed_tau", "length", "quadrature", "one_point"])
     ap.add_argument("studies", nargs="+")
     ap.add_argument("-o", "--output", default=str(ROOT / "docs" / "figures" / "results"))
     args = ap.parse_args()
