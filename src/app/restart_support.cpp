@@ -61,6 +61,37 @@ nlohmann::json measures_json(const LineMeasures& m) {
   return j;
 }
 
+nlohmann::json write_reactions(ReactionCsv& csv, double t, const std::vector<std::string>& names,
+                               const std::vector<std::array<double, 3>>& forces) {
+  csv.write(t, names, forces);
+  nlohmann::json r = nlohmann::json::object();
+  for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
+  return r;
+}
+
+nlohmann::json platens_description(const RigidPlatens& platens) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const RigidPlaten& platen : platens.platens())
+    list.push_back({{"boundary", platen.boundary},
+                    {"component", platen.component},
+                    {"area", platen.area},
+                    {"unknown", platen.master}});
+  return list;
+}
+
+nlohmann::json write_platens(PlatenCsv& csv, const RigidPlatens& platens, double t,
+                             const double* y) {
+  nlohmann::json r = nlohmann::json::object();
+  for (std::size_t k = 0; k < platens.platens().size(); ++k) {
+    const RigidPlaten& platen = platens.platens()[k];
+    const double w = y[static_cast<std::size_t>(platen.master)];
+    const double force = platens.force(k, t);
+    csv.write(t, platen.boundary, w, force);
+    r[platen.boundary] = {{"displacement", w}, {"force", force}};
+  }
+  return r;
+}
+
 nlohmann::json step_record(const StepInfo& info) {
   return {{"step", info.step},
           {"t", info.t},

@@ -271,13 +271,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     const std::string path = (out_dir / "platens.csv").string();
     if (append) keep_csv_rows_until(path, resume->t);
     platen_csv = std::make_unique<PlatenCsv>(path, append);
-    nlohmann::json list = nlohmann::json::array();
-    for (const RigidPlaten& platen : platens.platens())
-      list.push_back({{"boundary", platen.boundary},
-                      {"component", platen.component},
-                      {"area", platen.area},
-                      {"unknown", platen.master}});
-    summary["platens"] = list;
+    summary["platens"] = platens_description(platens);
   }
   probe_csv.describe(summary);
   const nlohmann::json carried =
@@ -310,22 +304,9 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
     if (reaction_csv) {
       const auto names = BiphasicProblem::reaction_labels(config.output.reactions);
       const auto forces = problem.reactions(config.output.reactions, t, y.data(), ydot.data());
-      reaction_csv->write(t, names, forces);
-      nlohmann::json r = nlohmann::json::object();
-      for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
-      o["reactions"] = r;
+      o["reactions"] = write_reactions(*reaction_csv, t, names, forces);
     }
-    if (platen_csv) {
-      nlohmann::json r = nlohmann::json::object();
-      for (std::size_t k = 0; k < platens.platens().size(); ++k) {
-        const RigidPlaten& platen = platens.platens()[k];
-        const double w = y[static_cast<std::size_t>(platen.master)];
-        const double force = platens.force(k, t);
-        platen_csv->write(t, platen.boundary, w, force);
-        r[platen.boundary] = {{"displacement", w}, {"force", force}};
-      }
-      o["platens"] = r;
-    }
+    if (platen_csv) o["platens"] = write_platens(*platen_csv, platens, t, y.data());
     if (balance) {
       const VolumeBalanceRecord& vb = balance->record();
       const double imbalance = vb.relative_imbalance();

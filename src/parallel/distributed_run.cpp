@@ -342,13 +342,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         const std::string path = (out_dir / "platens.csv").string();
         if (keep) keep_csv_rows_until(path, *keep);
         platen_csv = std::make_unique<PlatenCsv>(path, keep.has_value());
-        nlohmann::json list = nlohmann::json::array();
-        for (const RigidPlaten& platen : platens.platens())
-          list.push_back({{"boundary", platen.boundary},
-                          {"component", platen.component},
-                          {"area", platen.area},
-                          {"unknown", platen.master}});
-        summary["platens"] = list;
+        summary["platens"] = platens_description(platens);
       }
       if (!config.output.fields.empty())
         fields = keep ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, *keep,
@@ -483,27 +477,15 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
             for (int c = 0; c < 3; ++c)
               forces[b][static_cast<std::size_t>(c)] = total[3 * b + static_cast<std::size_t>(c)];
           const auto names = BiphasicProblem::reaction_labels(config.output.reactions);
-          reaction_csv->write(t, names, forces);
-          nlohmann::json r = nlohmann::json::object();
-          for (std::size_t i = 0; i < names.size(); ++i) r[names[i]] = forces[i];
-          o["reactions"] = r;
+          o["reactions"] = write_reactions(*reaction_csv, t, names, forces);
         }
       }
       run_collectively(comm, [&] {
         if (!root) return;
         m = probes->write(t, u, p);
         if (fields) fields->write(t, u, p, cells);
-        if (platen_csv) {
-          nlohmann::json r = nlohmann::json::object();
-          for (std::size_t k = 0; k < platens.platens().size(); ++k) {
-            const RigidPlaten& platen = platens.platens()[k];
-            const double w = u[static_cast<std::size_t>(platen.master)];
-            const double force = platens.force(k, t);
-            platen_csv->write(t, platen.boundary, w, force);
-            r[platen.boundary] = {{"displacement", w}, {"force", force}};
-          }
-          o["platens"] = r;
-        }
+        // u: the one-process layout of a three-dimensional run's displacements.
+        if (platen_csv) o["platens"] = write_platens(*platen_csv, platens, t, u.data());
         if (m) o.update(measures_json(*m));  // the entry a one-process run records
         summary["outputs"].push_back(o);
       });

@@ -139,6 +139,8 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
   geometry_.resize(mesh.tets.size());
   const bool one_point_gls = config.stabilisation.gls_quadrature == GlsQuadrature::OnePoint;
   if (one_point_gls) gls_point_.resize(mesh.tets.size());
+  const QuadratureRule centroid_rule = tet_quadrature(1);
+  std::vector<PointGeometry> centroid;
   const AnyStabilisation stabilisation = make_stabilisation(config.stabilisation.type);
   const bool sized = describe(stabilisation).sized_by_element;
   stabilisation_.resize(mesh.tets.size());
@@ -187,8 +189,7 @@ BiphasicProblem::BiphasicProblem(const Mesh& mesh, const Config& config, Assembl
     try {
       element_point_geometry(X, rule, geometry_[e]);
       if (one_point_gls) {
-        std::vector<PointGeometry> centroid;
-        element_point_geometry(X, tet_quadrature(1), centroid);
+        element_point_geometry(X, centroid_rule, centroid);
         gls_point_[e] = centroid.front();
       }
     } catch (const std::domain_error& err) {

@@ -1,9 +1,11 @@
 // What a run on one process (run.cpp) and a run on several (distributed_run.cpp) share to write
 // and continue checkpoints: the checkpoint's name and fingerprint, its checks, the summary of
-// the run being continued and the records the checkpoint carries on. Both write the same
+// the run being continued and the records the checkpoint carries on (the summary's entries, and
+// the output rows of reactions.csv and platens.csv that go with them). Both write the same
 // checkpoint.bin, so that either can continue the other's run (docs/output_and_restart.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -14,6 +16,9 @@
 #include "biphasic/io/case_file.hpp"
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/config.hpp"
+#include "biphasic/io/platen_csv.hpp"
+#include "biphasic/io/reaction_csv.hpp"
+#include "biphasic/physics/rigid_platen.hpp"
 #include "biphasic/study/measures.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
@@ -63,5 +68,19 @@ nlohmann::json step_record(const StepInfo& info);
 /// The line measures of one output as the summary's "outputs" entries record them (overshoot,
 /// undershoot and oscillation null where the measures are not defined).
 nlohmann::json measures_json(const LineMeasures& m);
+
+/// Writes one output's row of reactions.csv and returns the output's "reactions" entry,
+/// {label: [Fx, Fy, Fz]} [N].
+nlohmann::json write_reactions(ReactionCsv& csv, double t, const std::vector<std::string>& names,
+                               const std::vector<std::array<double, 3>>& forces);
+
+/// The summary's "platens" list: each platen's boundary, component, area [mm²] and the unknown
+/// (one-process layout) that carries its displacement.
+nlohmann::json platens_description(const RigidPlatens& platens);
+
+/// Writes one output's rows of platens.csv, each platen's displacement y[master] [mm] (y in the
+/// one-process layout) and prescribed force [N], and returns the output's "platens" entry.
+nlohmann::json write_platens(PlatenCsv& csv, const RigidPlatens& platens, double t,
+                             const double* y);
 
 }  // namespace biphasic
