@@ -5,24 +5,27 @@
 
 namespace biphasic {
 
-SubdomainDofs::SubdomainDofs(const Subdomain& sub, const PartitionedNumbering& numbering,
-                             const SparsityPattern& pattern, const std::vector<char>& constrained) {
+SubdomainDofs::SubdomainDofs(const SubdomainMap& sub, const PartitionedNumbering& numbering,
+                             const SparsityPattern& pattern, const std::vector<char>& constrained)
+    : pattern_(&pattern) {
   const Index n = pattern.size();
-  if (pattern.components() != 3 || pattern.num_nodes() != sub.mesh.num_nodes() ||
+  const Index d = numbering.components;
+  if (pattern.components() != d ||
+      pattern.num_nodes() != static_cast<Index>(sub.global_node.size()) ||
       static_cast<Index>(constrained.size()) != n)
     throw std::invalid_argument("subdomain unknowns: the pattern is not that of the part's mesh");
   const Index num_u = pattern.num_u();
   global_.resize(static_cast<std::size_t>(n));
   contributes_.assign(static_cast<std::size_t>(n), 0);
-  std::vector<char> touched(static_cast<std::size_t>(n), 0);
-  // Local unknown → node: u rows 3m + c, p rows by vertex.
-  auto node_of = [&](Index i) { return i < num_u ? i / 3 : i - num_u; };
+  touched_.assign(static_cast<std::size_t>(n), 0);
+  // Local unknown → node: u rows d·m + c, p rows by vertex.
+  auto node_of = [&](Index i) { return i < num_u ? i / d : i - num_u; };
   for (Index i = 0; i < n; ++i) {
     const auto m = static_cast<std::size_t>(node_of(i));
     const auto g = static_cast<std::size_t>(sub.global_node[m]);
     global_[static_cast<std::size_t>(i)] =
-        i < num_u ? numbering.u_base[g] + i % 3 : numbering.p_index[g];
-    touched[static_cast<std::size_t>(i)] = sub.node_touched[m];
+        i < num_u ? numbering.u_base[g] + i % d : numbering.p_index[g];
+    touched_[static_cast<std::size_t>(i)] = sub.node_touched[m];
     const bool owned = sub.node_owned[m] != 0;
     contributes_[static_cast<std::size_t>(i)] =
         sub.node_touched[m] && (owned || !constrained[static_cast<std::size_t>(i)]) ? 1 : 0;
@@ -36,16 +39,21 @@ SubdomainDofs::SubdomainDofs(const Subdomain& sub, const PartitionedNumbering& n
     if (global_[static_cast<std::size_t>(owned_[k])] != first_owned_ + static_cast<Index>(k))
       throw std::logic_error("subdomain unknowns: owned unknown " + std::to_string(k) +
                              " of part " + std::to_string(sub.part) + " out of order");
-  const auto& colptr = pattern.colptr();
-  const auto& rowind = pattern.rowind();
-  for (Index j = 0; j < n; ++j) {
-    if (!touched[static_cast<std::size_t>(j)]) continue;
+}
+
+std::vector<SubdomainDofs::Entry> SubdomainDofs::entries() const {
+  std::vector<Entry> out;
+  const auto& colptr = pattern_->colptr();
+  const auto& rowind = pattern_->rowind();
+  for (Index j = 0; j < size(); ++j) {
+    if (!touched(j)) continue;
     for (Index k = colptr[static_cast<std::size_t>(j)]; k < colptr[static_cast<std::size_t>(j) + 1];
          ++k) {
       const Index i = rowind[static_cast<std::size_t>(k)];
-      if (contributes(i)) entries_.push_back({global(i), global(j), k});
+      if (contributes(i)) out.push_back({global(i), global(j), k});
     }
   }
+  return out;
 }
 
 }  // namespace biphasic

@@ -3,21 +3,27 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <utility>
 
 namespace biphasic {
 
-std::vector<Index> nested_dissection_node_order(const Mesh& mesh) {
-  const auto nv = static_cast<std::size_t>(mesh.num_vertices);
-  const std::size_t num_nodes = mesh.nodes.size();
-  // Vertex graph in CSR form: each vertex's distinct neighbours through the tetrahedra.
+namespace {
+
+/// The order over the elements (4 corners and kTetEdges, or 3 corners and kTriEdges).
+template <class Element, std::size_t NumEdges>
+std::vector<Index> node_order(const std::vector<Element>& elements, Index num_vertices,
+                              std::size_t num_nodes, int corners,
+                              const std::array<std::array<int, 2>, NumEdges>& edges) {
+  const auto nv = static_cast<std::size_t>(num_vertices);
+  // Vertex graph in CSR form: each vertex's distinct neighbours through the elements.
   std::vector<std::vector<idx_t>> neighbours(nv);
-  for (const Tet10& tet : mesh.tets)
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b)
+  for (const Element& el : elements)
+    for (int a = 0; a < corners; ++a)
+      for (int b = 0; b < corners; ++b)
         if (a != b)
-          neighbours[static_cast<std::size_t>(tet[a])].push_back(static_cast<idx_t>(tet[b]));
+          neighbours[static_cast<std::size_t>(el[a])].push_back(static_cast<idx_t>(el[b]));
   std::vector<idx_t> xadj(nv + 1, 0), adjncy;
   for (std::size_t v = 0; v < nv; ++v) {
     auto& list = neighbours[v];
@@ -40,11 +46,11 @@ std::vector<Index> nested_dissection_node_order(const Mesh& mesh) {
   // Sort key: the vertex at position k → 2k; an edge node → 2k + 1, k the earlier of its ends.
   std::vector<std::pair<Index, Index>> keyed(num_nodes, {-1, -1});
   for (std::size_t v = 0; v < nv; ++v) keyed[v] = {2 * Index{iperm[v]}, static_cast<Index>(v)};
-  for (const Tet10& tet : mesh.tets)
-    for (std::size_t e = 0; e < kTetEdges.size(); ++e) {
-      const auto node = static_cast<std::size_t>(tet[4 + e]);
-      const Index first = std::min(Index{iperm[static_cast<std::size_t>(tet[kTetEdges[e][0]])]},
-                                   Index{iperm[static_cast<std::size_t>(tet[kTetEdges[e][1]])]});
+  for (const Element& el : elements)
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const auto node = static_cast<std::size_t>(el[static_cast<std::size_t>(corners) + e]);
+      const Index first = std::min(Index{iperm[static_cast<std::size_t>(el[edges[e][0]])]},
+                                   Index{iperm[static_cast<std::size_t>(el[edges[e][1]])]});
       keyed[node] = {2 * first + 1, static_cast<Index>(node)};
     }
   std::sort(keyed.begin(), keyed.end());
@@ -53,8 +59,18 @@ std::vector<Index> nested_dissection_node_order(const Mesh& mesh) {
   for (const auto& [key, node] : keyed)
     if (key >= 0) order.push_back(node);
   if (order.size() != num_nodes)
-    throw std::runtime_error("nested dissection: a node belongs to no tetrahedron");
+    throw std::runtime_error("nested dissection: a node belongs to no element");
   return order;
+}
+
+}  // namespace
+
+std::vector<Index> nested_dissection_node_order(const Mesh& mesh) {
+  return node_order(mesh.tets, mesh.num_vertices, mesh.nodes.size(), 4, kTetEdges);
+}
+
+std::vector<Index> nested_dissection_node_order(const SectionMesh& mesh) {
+  return node_order(mesh.triangles, mesh.num_vertices, mesh.nodes.size(), 3, kTriEdges);
 }
 
 }  // namespace biphasic

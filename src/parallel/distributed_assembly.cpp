@@ -11,6 +11,7 @@
 #include "biphasic/parallel/collective_failure.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/physics/assembly_scope.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 
@@ -24,7 +25,8 @@ PetscInt petsc_index(Index i) {
 }
 
 /// The partition of process 0, broadcast: every process then works on the same split.
-MeshPartition shared_partition(const Mesh& mesh, MPI_Comm comm) {
+template <class AnyMesh>
+MeshPartition shared_partition(const AnyMesh& mesh, std::size_t num_elements, MPI_Comm comm) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -48,8 +50,8 @@ MeshPartition shared_partition(const Mesh& mesh, MPI_Comm comm) {
     throw std::runtime_error(message);
   }
   p.parts = size;
-  p.tet_part.resize(mesh.tets.size());
-  MPI_Bcast(p.tet_part.data(), static_cast<int>(p.tet_part.size()), MPI_INT, 0, comm);
+  p.element_part.resize(num_elements);
+  MPI_Bcast(p.element_part.data(), static_cast<int>(p.element_part.size()), MPI_INT, 0, comm);
   assign_node_owners(mesh, p);
   return p;
 }
@@ -58,22 +60,50 @@ MeshPartition shared_partition(const Mesh& mesh, MPI_Comm comm) {
 
 DistributedAssembly::DistributedAssembly(const Mesh& mesh, const Config& config, MPI_Comm comm)
     : comm_(comm) {
-  MPI_Comm_rank(comm, &rank_);
-  const MeshPartition partition = shared_partition(mesh, comm);
-  numbering_ = number_unknowns(mesh, partition);
-  petsc_index(numbering_.size());
-  run_collectively(comm, [&] {
+  build(mesh, mesh.tets.size(), sub_, config, [&] {
     platens_ = std::make_unique<DistributedPlatens>(mesh, config);
-    sub_ = extract_subdomain(mesh, partition, rank_);
     AssemblyScope scope = subdomain_scope(mesh, sub_);
     if (!platens_->empty()) scope.platens = &platens_->platens();
-    problem_ = std::make_unique<BiphasicProblem>(sub_.mesh, config, std::move(scope));
-    dofs_ = std::make_unique<SubdomainDofs>(sub_, numbering_, problem_->pattern(),
+    auto problem = std::make_unique<BiphasicProblem>(sub_.mesh, config, std::move(scope));
+    body_ = problem.get();
+    return problem;
+  });
+}
+
+DistributedAssembly::DistributedAssembly(const SectionMesh& mesh, const Config& config,
+                                         MPI_Comm comm)
+    : comm_(comm) {
+  const SectionModel model = section_model(config.model);
+  build(mesh, mesh.triangles.size(), section_sub_, config, [&] {
+    platens_ =
+        std::make_unique<DistributedPlatens>(mesh, model == SectionModel::Axisymmetric, config);
+    AssemblyScope scope = subdomain_scope(mesh, section_sub_, model);
+    if (!platens_->empty()) scope.platens = &platens_->platens();
+    auto problem =
+        std::make_unique<SectionProblem>(section_sub_.mesh, model, config, std::move(scope));
+    section_ = problem.get();
+    return problem;
+  });
+}
+
+template <class AnyMesh, class Part, class MakeProblem>
+void DistributedAssembly::build(const AnyMesh& mesh, std::size_t num_elements, Part& sub,
+                                const Config& config, MakeProblem make_problem) {
+  MPI_Comm_rank(comm_, &rank_);
+  const MeshPartition partition = shared_partition(mesh, num_elements, comm_);
+  numbering_ = number_unknowns(mesh, partition);
+  petsc_index(numbering_.size());
+  run_collectively(comm_, [&] {
+    sub = extract_subdomain(mesh, partition, rank_);
+    map_ = &sub;
+    problem_ = make_problem();
+    dofs_ = std::make_unique<SubdomainDofs>(sub, numbering_, problem_->pattern(),
                                             problem_->constrained());
   });
   platens_->bind(numbering_, *dofs_, problem_->constrained(), problem_->stiffness_scale(),
-                 config.bcs, comm);
-  entries_ = platens_->entries(dofs_->entries(), problem_->pattern());
+                 config.bcs, comm_);
+  local_nnz_ = problem_->pattern().nnz();
+  tail_ = platens_->tie_entries();
   if (rank_ == 0 && config.linear_solver.ordering == Ordering::Metis) {
     // Each platen's master node last, as one process orders it: its force row is dense over
     // the platen's neighbourhood, and eliminating it early would fill that neighbourhood.
@@ -90,8 +120,9 @@ DistributedAssembly::DistributedAssembly(const Mesh& mesh, const Config& config,
   y_.resize(n);
   ydot_.resize(n);
   F_.resize(n);
-  values_.resize(static_cast<std::size_t>(problem_->pattern().nnz()));
-  coo_values_.resize(entries_.size());
+  values_.resize(static_cast<std::size_t>(coo_size()));
+  for (std::size_t k = 0; k < tail_.size(); ++k)
+    values_[static_cast<std::size_t>(local_nnz_) + k] = tail_[k].constant;
 
   std::vector<PetscInt> global(n);
   for (std::size_t i = 0; i < n; ++i) global[i] = petsc_index(dofs_->global(static_cast<Index>(i)));
@@ -124,17 +155,35 @@ Mat DistributedAssembly::new_matrix() const {
   petsc_check(MatCreate(comm_, &J), "MatCreate");
   petsc_check(MatSetSizes(J, m, m, N, N), "MatSetSizes");
   petsc_check(MatSetType(J, MATAIJ), "MatSetType");
-  const auto& entries = entries_;
-  // PETSc may reorder the index arrays it is given: pass copies.
-  std::vector<PetscInt> rows(entries.size()), cols(entries.size());
-  for (std::size_t k = 0; k < entries.size(); ++k) {
-    rows[k] = petsc_index(entries[k].row);
-    cols[k] = petsc_index(entries[k].col);
-  }
+  std::vector<PetscInt> rows, cols;  // PETSc may change them: made for this call
+  coo_indices(rows, cols);
   petsc_check(
-      MatSetPreallocationCOO(J, static_cast<PetscCount>(entries.size()), rows.data(), cols.data()),
+      MatSetPreallocationCOO(J, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()),
       "MatSetPreallocationCOO");
   return J;
+}
+
+void DistributedAssembly::coo_indices(std::vector<PetscInt>& rows,
+                                      std::vector<PetscInt>& cols) const {
+  const SparsityPattern& pattern = problem_->pattern();
+  const auto& colptr = pattern.colptr();
+  const auto& rowind = pattern.rowind();
+  rows.assign(static_cast<std::size_t>(coo_size()), -1);
+  cols.assign(rows.size(), -1);
+  for (Index j = 0; j < pattern.size(); ++j)
+    for (Index k = colptr[static_cast<std::size_t>(j)]; k < colptr[static_cast<std::size_t>(j) + 1];
+         ++k) {
+      const Index i = rowind[static_cast<std::size_t>(k)];
+      if (!dofs_->contributes(i, j)) continue;
+      // A platen's tie row adds its entries to the force row (parallel/distributed_platens.hpp).
+      const Index force = platens_->force_row(i);
+      rows[static_cast<std::size_t>(k)] = petsc_index(force >= 0 ? force : dofs_->global(i));
+      cols[static_cast<std::size_t>(k)] = petsc_index(dofs_->global(j));
+    }
+  for (std::size_t t = 0; t < tail_.size(); ++t) {
+    rows[static_cast<std::size_t>(local_nnz_) + t] = petsc_index(tail_[t].row);
+    cols[static_cast<std::size_t>(local_nnz_) + t] = petsc_index(tail_[t].col);
+  }
 }
 
 void DistributedAssembly::to_local(Vec global, std::vector<double>& local) {
@@ -176,23 +225,16 @@ void DistributedAssembly::time_derivative(double t, Vec dFdt) {
 void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate) {
   to_local(y, y_);
   to_local(ydot, ydot_);
-  if (rate) rate_values_.resize(values_.size());
+  // The tail (a platen's tie entries) keeps its constants s and −s, and 0 in dF/dẏ: the local
+  // problem writes the CSC positions only.
+  if (rate) rate_values_.resize(values_.size(), 0.0);
   run_collectively(comm_, [&] {
     problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data(),
                        rate ? rate_values_.data() : nullptr);
   });
-  // A platen's tie entries carry their constant s or −s, in dF/dẏ 0.
-  for (std::size_t k = 0; k < entries_.size(); ++k) {
-    const ContributedEntry& e = entries_[k];
-    coo_values_[k] = e.position >= 0 ? values_[static_cast<std::size_t>(e.position)] : e.constant;
-  }
-  petsc_check(MatSetValuesCOO(J, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
-  if (!rate) return;
-  for (std::size_t k = 0; k < entries_.size(); ++k) {
-    const ContributedEntry& e = entries_[k];
-    coo_values_[k] = e.position >= 0 ? rate_values_[static_cast<std::size_t>(e.position)] : 0.0;
-  }
-  petsc_check(MatSetValuesCOO(rate, coo_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+  petsc_check(MatSetValuesCOO(J, values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+  if (rate)
+    petsc_check(MatSetValuesCOO(rate, rate_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
 }
 
 void DistributedAssembly::apply_dirichlet(double t, Vec y, Vec ydot) const {

@@ -10,6 +10,10 @@ namespace biphasic {
 DistributedPlatens::DistributedPlatens(const Mesh& mesh, const Config& config)
     : curves_(config.curves), platens_(mesh, config, curves_) {}
 
+DistributedPlatens::DistributedPlatens(const SectionMesh& mesh, bool axisymmetric,
+                                       const Config& config)
+    : curves_(config.curves), platens_(mesh, axisymmetric, config, curves_) {}
+
 void DistributedPlatens::bind(const PartitionedNumbering& numbering, const SubdomainDofs& dofs,
                               const std::vector<char>& held, double row_scale,
                               const std::vector<BoundaryCondition>& bcs, MPI_Comm comm) {
@@ -21,9 +25,10 @@ void DistributedPlatens::bind(const PartitionedNumbering& numbering, const Subdo
   master_of_local_.assign(static_cast<std::size_t>(dofs.size()), -1);
   parts_.assign(platens_.platens().size(), {});
   if (platens_.empty()) return;
-  // Whole-system unknown of a one-process displacement unknown 3n + c.
+  // Whole-system unknown of a one-process displacement unknown d·n + c.
+  const Index d = numbering.components;
   auto whole = [&](Index dof) {
-    return numbering.u_base[static_cast<std::size_t>(dof / 3)] + dof % 3;
+    return numbering.u_base[static_cast<std::size_t>(dof / d)] + dof % d;
   };
   auto owned_offset = [&](Index g) {
     const Index k = g - first_owned_;
@@ -42,12 +47,12 @@ void DistributedPlatens::bind(const PartitionedNumbering& numbering, const Subdo
   held_any.resize(held_here.size());
   MPI_Allreduce(held_here.data(), held_any.data(), static_cast<int>(held_here.size()), MPI_INT,
                 MPI_MAX, comm);
-  std::vector<char> held_whole(3 * numbering.u_base.size(), 0);
+  std::vector<char> held_whole(static_cast<std::size_t>(d) * numbering.u_base.size(), 0);
   std::size_t at = 0;
   for (const RigidPlaten& p : platens_.platens())
     for (Index dof : p.dofs) held_whole[static_cast<std::size_t>(dof)] = held_any[at++] ? 1 : 0;
   try {
-    platens_.check_free(held_whole, 3, bcs);
+    platens_.check_free(held_whole, numbering.components, bcs);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // bad input: exit status 1, as in one process
   }
@@ -76,17 +81,8 @@ void DistributedPlatens::bind(const PartitionedNumbering& numbering, const Subdo
   }
 }
 
-std::vector<ContributedEntry> DistributedPlatens::entries(
-    const std::vector<SubdomainDofs::Entry>& contributed, const SparsityPattern& pattern) const {
+std::vector<ContributedEntry> DistributedPlatens::tie_entries() const {
   std::vector<ContributedEntry> out;
-  out.reserve(contributed.size());
-  const auto& rows = pattern.rowind();
-  for (const SubdomainDofs::Entry& e : contributed) {
-    const Index m = platens_.empty() ? -1
-                                     : master_of_local_[static_cast<std::size_t>(
-                                           rows[static_cast<std::size_t>(e.position)])];
-    out.push_back({m >= 0 ? m : e.row, e.col, e.position, 0.0});
-  }
   for (const Part& part : parts_)
     for (Index o : part.ties) {
       const Index i = first_owned_ + o;

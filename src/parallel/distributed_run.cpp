@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "biphasic/app/field_output.hpp"
+#include "biphasic/app/preflight.hpp"
 #include "biphasic/app/probes.hpp"
 #include "biphasic/app/restart_support.hpp"
+#include "biphasic/app/run.hpp"
 #include "biphasic/app/segment_counters.hpp"
 #include "biphasic/io/atomic_file.hpp"
 #include "biphasic/io/case_file.hpp"
@@ -30,6 +32,7 @@
 #include "biphasic/parallel/mesh_broadcast.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/physics/field_recovery.hpp"
+#include "biphasic/physics/section_field_recovery.hpp"
 #include "biphasic/time/backward_euler.hpp"
 #include "biphasic/time/bdf_integrator.hpp"
 
@@ -49,11 +52,8 @@ void write_json(const fs::path& path, const nlohmann::json& j) {
   write_file_atomically(path.string(), j.dump(2) + '\n');
 }
 
-/// Refuses, before any work, what does not run on several processes yet.
+/// Refuses, before any work, what does not run on several processes.
 void check_supported(const Config& config) {
-  if (is_two_dimensional(config.model))
-    throw std::invalid_argument("model = \"" + to_string(config.model) +
-                                "\": the two-dimensional models run on one process only");
   if (config.linear_solver.type == LinearSolverType::Klu ||
       config.linear_solver.type == LinearSolverType::Umfpack)
     throw std::invalid_argument(kOneProcessSolvers);
@@ -128,10 +128,15 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
   std::unique_ptr<OutputFolder> folder;
   fs::path out_dir, summary_path;
   nlohmann::json summary;
+  // The whole mesh: tetrahedra, or the section of a two-dimensional model.
+  const bool planar = is_two_dimensional(config.model);
+  const Index d = planar ? 2 : 3;  // displacement components per node
   Mesh mesh;
+  SectionMesh section;
   double mesh_seconds = 0.0;
-  std::optional<Checkpoint> resume;  // on process 0
-  std::uint64_t case_hash = 0;       // on process 0
+  std::optional<Checkpoint> resume;          // on process 0
+  std::vector<std::string> preflight_notes;  // on process 0
+  std::uint64_t case_hash = 0;               // on process 0
   run_checking_checkpoint(comm, [&] {
     if (!root) return;
     if (options.restart && !fs::is_directory(options.output_dir))
@@ -155,13 +160,28 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     summary.erase("error");
     if (!resume) write_json(summary_path, summary);
     const auto t0 = Clock::now();
-    mesh = build_mesh(config, out_dir.string());
+    if (planar)
+      section = build_case_section_mesh(config);
+    else
+      mesh = build_mesh(config, out_dir.string());
     mesh_seconds = seconds_since(t0);
     // The one-process fingerprint: the checkpoint does not depend on the process count.
-    case_hash = case_fingerprint(config, mesh.nodes, mesh.tets);
+    case_hash = planar ? case_fingerprint(config, section.nodes, section.triangles)
+                       : case_fingerprint(config, mesh.nodes, mesh.tets);
+    // The one-process checks before the first step (conflicting conditions, free rigid-body
+    // modes, ...): bad input, refused with exit status 1 as in one process.
+    try {
+      preflight_notes = planar ? preflight_section(config, section) : preflight(config, mesh);
+    } catch (const CaseError& e) {
+      std::string text = "the case has " + std::to_string(e.problems().size()) + " problem(s):";
+      for (const std::string& problem : e.problems()) text += "\n  " + problem;
+      throw std::invalid_argument(text);
+    }
     if (resume) {
       const std::string path = (out_dir / kCheckpointName).string();
-      const std::size_t whole = static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices);
+      const std::size_t whole =
+          planar ? static_cast<std::size_t>(2 * section.num_nodes() + section.num_vertices)
+                 : static_cast<std::size_t>(3 * mesh.num_nodes() + mesh.num_vertices);
       accept_checkpoint(*resume, path, case_hash, whole, config.time);
       // The integrator's state must split into its header and whole vectors (or be empty).
       const std::size_t m = resume->integrator_state.size();
@@ -182,10 +202,20 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     }
   };
 
+  for (const std::string& note : preflight_notes) say(note);
   try {
-    broadcast_mesh(mesh, comm);
+    if (planar)
+      broadcast_mesh(section, comm);
+    else
+      broadcast_mesh(mesh, comm);
+    const Index num_nodes = planar ? section.num_nodes() : mesh.num_nodes();
+    const Index num_vertices = planar ? section.num_vertices : mesh.num_vertices;
+    const std::size_t num_elements = planar ? section.triangles.size() : mesh.tets.size();
     const auto setup0 = Clock::now();
-    DistributedAssembly assembly(mesh, config, comm);
+    const std::unique_ptr<DistributedAssembly> assembly_ptr =
+        planar ? std::make_unique<DistributedAssembly>(section, config, comm)
+               : std::make_unique<DistributedAssembly>(mesh, config, comm);
+    DistributedAssembly& assembly = *assembly_ptr;
     DistributedSystem system(assembly);
     std::unique_ptr<TimeIntegrator> integrator;
     run_collectively(comm, [&] {
@@ -206,7 +236,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     }
     // Unknown i of the one-process layout is rank-major unknown whole_to_rank_major[i].
     const std::vector<Index> whole_to_rank_major =
-        root ? rank_major_of_whole(mesh, numbering) : std::vector<Index>();
+        root ? rank_major_of_whole(num_vertices, numbering) : std::vector<Index>();
     // The Dirichlet flags of the whole system in the one-process layout (the probe line's
     // drained ends).
     std::vector<char> constrained_all(whole_to_rank_major.size());
@@ -324,14 +354,14 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       if (!root) return;
       std::vector<Probe> lines;
       try {
-        lines = build_probes(config, mesh);
+        lines = planar ? build_section_probes(config, section) : build_probes(config, mesh);
       } catch (const CaseError& e) {  // a probe outside the body: bad input (exit status 1)
         throw std::invalid_argument(e.what());
       }
       // A restart drops what the earlier run wrote after its checkpoint, then appends.
       const std::optional<double> keep = resume ? std::optional<double>(resume->t) : std::nullopt;
-      probes = std::make_unique<ProbeRecorder>(std::move(lines), constrained_all,
-                                               3 * mesh.num_nodes(), out_dir.string(), keep);
+      probes = std::make_unique<ProbeRecorder>(std::move(lines), constrained_all, d * num_nodes,
+                                               out_dir.string(), keep);
       probes->describe(summary);
       if (!config.output.reactions.empty()) {
         const std::string path = (out_dir / "reactions.csv").string();
@@ -344,27 +374,33 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         platen_csv = std::make_unique<PlatenCsv>(path, keep.has_value());
         summary["platens"] = platens_description(platens);
       }
-      if (!config.output.fields.empty())
-        fields = keep ? std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh, *keep,
-                                                      field_layout(config.output.fields))
-                      : std::make_unique<FieldWriter>(out_dir.string(), "fields", mesh,
-                                                      field_layout(config.output.fields));
+      if (!config.output.fields.empty()) {
+        const FieldLayout layout = field_layout(config.output.fields);
+        const std::string dir = out_dir.string();
+        if (planar)
+          fields = keep ? std::make_unique<FieldWriter>(dir, "fields", section, *keep, layout)
+                        : std::make_unique<FieldWriter>(dir, "fields", section, layout);
+        else
+          fields = keep ? std::make_unique<FieldWriter>(dir, "fields", mesh, *keep, layout)
+                        : std::make_unique<FieldWriter>(dir, "fields", mesh, layout);
+      }
     });
     const double setup_seconds = seconds_since(setup0);
 
     // The partition, per process.
-    const Subdomain& sub = assembly.subdomain();
+    const SubdomainMap& sub = assembly.subdomain();
     double owned_elements = 0.0;
-    for (char c : sub.tet_owned) owned_elements += c ? 1.0 : 0.0;
+    for (char c : sub.element_owned) owned_elements += c ? 1.0 : 0.0;
     const std::vector<double> elements = gather(owned_elements, comm);
     const std::vector<double> local_elements =
-        gather(static_cast<double>(sub.mesh.tets.size()), comm);
+        gather(static_cast<double>(sub.global_element.size()), comm);
     const std::vector<double> owned_unknowns = gather(static_cast<double>(system.size()), comm);
     if (root) {
-      summary["mesh"] = {{"nodes", mesh.num_nodes()},
-                         {"vertices", mesh.num_vertices},
-                         {"tetrahedra", mesh.tets.size()},
+      summary["mesh"] = {{"nodes", num_nodes},
+                         {"vertices", num_vertices},
+                         {planar ? "triangles" : "tetrahedra", num_elements},
                          {"unknowns", n_global}};
+      summary["model"] = to_string(config.model);
       summary["parallel"] = {{"processes", size},
                              {"partitioner", "METIS_PartMeshDual on process 0"},
                              {"owned_elements", elements},
@@ -378,8 +414,8 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     // the elements' numbers in the whole mesh.
     const FieldLayout layout = field_layout(config.output.fields);
     std::vector<int> owned_tets;  // local indices of the owned tetrahedra
-    for (std::size_t e = 0; e < sub.tet_owned.size(); ++e)
-      if (sub.tet_owned[e]) owned_tets.push_back(static_cast<int>(e));
+    for (std::size_t e = 0; e < sub.element_owned.size(); ++e)
+      if (sub.element_owned[e]) owned_tets.push_back(static_cast<int>(e));
     std::vector<int> tet_counts(static_cast<std::size_t>(size)),
         tet_displs(static_cast<std::size_t>(size));
     std::vector<Index> tet_of;  // on process 0: the whole mesh's number of each gathered element
@@ -390,8 +426,8 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         tet_displs[r] = tet_displs[r - 1] + tet_counts[r - 1];
       std::vector<Index> global(owned_tets.size());
       for (std::size_t k = 0; k < owned_tets.size(); ++k)
-        global[k] = sub.global_tet[static_cast<std::size_t>(owned_tets[k])];
-      tet_of.resize(root ? mesh.tets.size() : 0);
+        global[k] = sub.global_element[static_cast<std::size_t>(owned_tets[k])];
+      tet_of.resize(root ? num_elements : 0);
       MPI_Gatherv(global.data(), mine, MPI_INT64_T, tet_of.data(), tet_counts.data(),
                   tet_displs.data(), MPI_INT64_T, 0, comm);
     }
@@ -400,7 +436,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     auto gather_cells = [&](const std::vector<double>& local) {
       std::vector<std::vector<double>> mine;
       run_collectively(comm, [&] {
-        CellFields recovered = recover_cell_fields(assembly.local_problem(), local.data());
+        CellFields recovered = planar
+                                   ? recover_section_cell_fields(*assembly.section(), local.data())
+                                   : recover_cell_fields(*assembly.body(), local.data());
         mine = selected_cell_values(config.output.fields, recovered);
       });
       std::vector<std::vector<double>> whole(mine.size());
@@ -415,7 +453,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
           counts_q[r] = tet_counts[r] * width;
           displs_q[r] = tet_displs[r] * width;
         }
-        std::vector<double> gathered(root ? mesh.tets.size() * static_cast<std::size_t>(width) : 0);
+        std::vector<double> gathered(root ? num_elements * static_cast<std::size_t>(width) : 0);
         MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, gathered.data(),
                     counts_q.data(), displs_q.data(), MPI_DOUBLE, 0, comm);
         if (!root) continue;
@@ -428,21 +466,30 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       return whole;
     };
 
-    // Gathers an owned state into the one-process layout on process 0, u and p apart.
+    // Gathers an owned state into the one-process layout on process 0, u (d per node) and p
+    // apart, and u with three components per node (a section's third 0) for the probes.
     auto to_serial = [&](const std::vector<double>& owned, std::vector<double>& u,
-                         std::vector<double>& p) {
+                         std::vector<double>& p, std::vector<double>& u3) {
       const std::vector<double> whole = to_whole(owned.data());
       if (!root) return;
-      const auto num_u = static_cast<std::ptrdiff_t>(3 * mesh.num_nodes());
+      const auto num_u = static_cast<std::ptrdiff_t>(d * num_nodes);
       u.assign(whole.begin(), whole.begin() + num_u);
       p.assign(whole.begin() + num_u, whole.end());
+      if (d == 3) {
+        u3 = u;
+        return;
+      }
+      u3.assign(static_cast<std::size_t>(3 * num_nodes), 0.0);
+      for (Index n = 0; n < num_nodes; ++n)
+        for (Index c = 0; c < d; ++c)
+          u3[static_cast<std::size_t>(3 * n + c)] = u[static_cast<std::size_t>(d * n + c)];
     };
     // Reactions: each process's share from its own elements, summed on process 0.
     Vec owned_view = nullptr;
     petsc_check(VecCreateMPIWithArray(comm, 1, static_cast<PetscInt>(system.size()),
                                       static_cast<PetscInt>(n_global), nullptr, &owned_view),
                 "VecCreateMPIWithArray");
-    std::vector<double> y_local, ydot_local, u, p;
+    std::vector<double> y_local, ydot_local, u, p, u3;
     auto local_state = [&](const std::vector<double>& owned, std::vector<double>& local) {
       petsc_check(VecPlaceArray(owned_view, owned.data()), "VecPlaceArray");
       assembly.to_local(owned_view, local);
@@ -450,7 +497,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     };
     auto write_output = [&](double t, const std::vector<double>& ys,
                             const std::vector<double>& ydots) {
-      to_serial(ys, u, p);
+      to_serial(ys, u, p, u3);
       std::vector<std::vector<double>> cells;
       if (!layout.cells.empty()) {
         local_state(ys, y_local);
@@ -482,9 +529,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       }
       run_collectively(comm, [&] {
         if (!root) return;
-        m = probes->write(t, u, p);
+        m = probes->write(t, u3, p);
         if (fields) fields->write(t, u, p, cells);
-        // u: the one-process layout of a three-dimensional run's displacements.
+        // u: the displacements in the one-process layout, where the platens' unknowns point.
         if (platen_csv) o["platens"] = write_platens(*platen_csv, platens, t, u.data());
         if (m) o.update(measures_json(*m));  // the entry a one-process run records
         summary["outputs"].push_back(o);

@@ -40,7 +40,7 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
  public:
   DistributedEntrywiseMatrices(DistributedSystem& system, DistributedAssembly& assembly)
       : system_(system), assembly_(assembly) {
-    BiphasicProblem& local = assembly.local_problem();
+    BiphasicModel& local = assembly.local_problem();
     const SparsityPattern& pattern = local.pattern();
     a0_.resize(static_cast<std::size_t>(pattern.nnz()));
     r_.resize(a0_.size());
@@ -50,7 +50,7 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
       for (Index q = pattern.colptr()[static_cast<std::size_t>(j)];
            q < pattern.colptr()[static_cast<std::size_t>(j) + 1]; ++q)
         column_of_[static_cast<std::size_t>(q)] = j;
-    values_.resize(assembly.entries().size());
+    values_.resize(static_cast<std::size_t>(assembly.coo_size()));
     if (SUNContext_Create(nullptr, &ctx_) != 0)
       throw std::runtime_error("SUNContext_Create failed");
     petsc_check(VecCreateMPIWithArray(assembly.comm(), 1, static_cast<PetscInt>(system.size()),
@@ -94,21 +94,21 @@ class DistributedEntrywiseMatrices final : public EntrywiseMatrices {
   void build(int slot, const Rule& rule) override {
     SUNMatrix& m = slots_.at(static_cast<std::size_t>(slot));
     if (!m) m = system_.new_jacobian_matrix(ctx_);
-    BiphasicProblem& local = assembly_.local_problem();
+    BiphasicModel& local = assembly_.local_problem();
     const Index nu = local.num_u();
     const std::vector<char>& fixed = local.constrained();
     const auto& rows = local.pattern().rowind();
-    const auto& entries = assembly_.entries();
-    for (std::size_t k = 0; k < entries.size(); ++k) {
-      if (entries[k].position < 0) {  // a platen's tie row: s or −s in A0, nothing in R
-        values_[k] = rule(true, true, true, entries[k].constant, 0.0);
-        continue;
-      }
-      // A tie row's entry moved to the force row keeps its own row's kind: a free momentum row.
-      const auto q = static_cast<std::size_t>(entries[k].position);
+    // The local CSC positions in order (those PETSc ignores get a value all the same), then
+    // the platens' tie entries: s or −s in A0, nothing in R. A tie row's entry moved to the force
+    // row keeps its own row's kind: a free momentum row.
+    const std::size_t nnz = a0_.size();
+    for (std::size_t q = 0; q < nnz; ++q) {
       const Index i = rows[q], j = column_of_[q];
-      values_[k] = rule(i < nu, j < nu, fixed[static_cast<std::size_t>(i)] != 0, a0_[q], r_[q]);
+      values_[q] = rule(i < nu, j < nu, fixed[static_cast<std::size_t>(i)] != 0, a0_[q], r_[q]);
     }
+    const auto& tail = assembly_.tail();
+    for (std::size_t k = 0; k < tail.size(); ++k)
+      values_[nnz + k] = rule(true, true, true, tail[k].constant, 0.0);
     petsc_check(MatSetValuesCOO(petsc_matrix(m), values_.data(), INSERT_VALUES), "MatSetValuesCOO");
   }
   void residual(int slot, const double* b, const double* x, double* r) const override {
@@ -163,7 +163,8 @@ std::unique_ptr<EntrywiseMatrices> DistributedSystem::entrywise_matrices() {
 DistributedSystem::DistributedSystem(DistributedAssembly& assembly) : assembly_(assembly) {
   int rank = 0;
   MPI_Comm_rank(assembly.comm(), &rank);
-  num_u_ = 3 * assembly.numbering().owned_nodes[static_cast<std::size_t>(rank)];
+  num_u_ = assembly.numbering().components *
+           assembly.numbering().owned_nodes[static_cast<std::size_t>(rank)];
   const std::vector<char>& local = assembly.local_problem().constrained();
   for (Index i : assembly.dofs().owned())
     constrained_.push_back(local[static_cast<std::size_t>(i)]);
@@ -259,12 +260,21 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
     layout.owned = size();
     layout.owned_u = num_u_;
     layout.first_owned = assembly_.first_owned();
-    const Subdomain& sub = assembly_.subdomain();
+    const Index d = assembly_.numbering().components;
+    layout.components = static_cast<int>(d);
     const auto& owned = assembly_.dofs().owned();
-    for (Index k = 0; k < num_u_; k += 3) {
-      const Point& x =
-          sub.mesh.nodes[static_cast<std::size_t>(owned[static_cast<std::size_t>(k)] / 3)];
-      layout.coordinates.insert(layout.coordinates.end(), x.begin(), x.end());
+    // Each owned node's coordinates, from its first displacement unknown d·m.
+    auto add_coordinates = [&](const auto& nodes) {
+      for (Index k = 0; k < num_u_; k += d) {
+        const auto& x = nodes[static_cast<std::size_t>(owned[static_cast<std::size_t>(k)] / d)];
+        layout.coordinates.insert(layout.coordinates.end(), x.begin(), x.end());
+      }
+    };
+    if (const SectionProblem* section = assembly_.section()) {
+      add_coordinates(section->mesh().nodes);
+      layout.rigid_body_modes = section->model() == SectionModel::PlaneStrain;
+    } else {
+      add_coordinates(assembly_.body()->mesh().nodes);
     }
     if (saddle) layout.schur_term = saddle->schur_term;
     return make_petsc_fieldsplit_solver(assembly_.comm(), config.krylov, std::move(layout), ctx,
@@ -273,6 +283,12 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
   if (config.type == LinearSolverType::SuperluDist)
     return make_superlu_dist_solver(assembly_.comm(), ctx, stats);
   throw std::invalid_argument(kOneProcessSolvers);
+}
+
+double DistributedSystem::max_norm(const double* v) const {
+  double mine = SemidiscreteSystem::max_norm(v), largest = 0.0;
+  MPI_Allreduce(&mine, &largest, 1, MPI_DOUBLE, MPI_MAX, assembly_.comm());
+  return largest;
 }
 
 std::pair<double, double> DistributedSystem::field_norms(const double* F) const {
@@ -315,7 +331,7 @@ SaddlePointStructure DistributedSystem::saddle_point_structure(
   std::vector<Index> block_start(parts + 1, 0);
   for (std::size_t r = 0; r < parts; ++r)
     block_start[r + 1] = block_start[r] + num.owned_vertices[r];
-  BiphasicProblem& local = assembly_.local_problem();
+  BiphasicModel& local = assembly_.local_problem();
   const Index local_nu = local.num_u();
   const Index vertices = local.size() - local_nu;
   auto block = std::make_shared<std::vector<Index>>(static_cast<std::size_t>(vertices), -1);
@@ -326,15 +342,18 @@ SaddlePointStructure DistributedSystem::saddle_point_structure(
     const auto r = static_cast<std::size_t>(
         std::upper_bound(num.offset.begin(), num.offset.end(), g) - num.offset.begin() - 1);
     (*block)[static_cast<std::size_t>(v)] =
-        g - num.offset[r] - 3 * num.owned_nodes[r] + block_start[r];
+        g - num.offset[r] - num.components * num.owned_nodes[r] + block_start[r];
   }
   SaddlePointStructure s;
   s.num_u = num_u_;
+  s.components = num.components;
   s.constrained = constrained_;
-  s.schur_term = [&local, block, shifts = std::move(shifts)](std::vector<PressureEntry>& out) {
-    const auto [cj, cj_gls] = shifts();
+  // The local problem's own term, by its local vertex numbers.
+  auto local_term = std::make_shared<std::function<void(std::vector<PressureEntry>&)>>(
+      local.saddle_point_structure(std::move(shifts)).schur_term);
+  s.schur_term = [local_term, block](std::vector<PressureEntry>& out) {
     std::vector<PressureEntry> mine;
-    local.pressure_schur_term(cj, cj_gls, mine);
+    (*local_term)(mine);
     for (const PressureEntry& e : mine) {
       const Index r = (*block)[static_cast<std::size_t>(e.row)];
       const Index c = (*block)[static_cast<std::size_t>(e.col)];

@@ -12,77 +12,103 @@ namespace biphasic {
 
 namespace {
 
-/// Appends to and reads from a flat byte buffer.
+/// A flat byte buffer that either writes (`reading` false) or reads the values passed to io():
+/// one description of a mesh's layout serves both directions.
 class Buffer {
  public:
-  template <class T>
-  void put(const T& x) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto* p = reinterpret_cast<const char*>(&x);
-    bytes.insert(bytes.end(), p, p + sizeof(T));
-  }
-  template <class T>
-  void put(const std::vector<T>& v) {
-    put(static_cast<std::uint64_t>(v.size()));
-    const auto* p = reinterpret_cast<const char*>(v.data());
-    bytes.insert(bytes.end(), p, p + v.size() * sizeof(T));
-  }
-  void put(const std::string& s) { put(std::vector<char>(s.begin(), s.end())); }
+  explicit Buffer(bool reading) : reading_(reading) {}
 
   template <class T>
-  void get(T& x) {
-    take(&x, sizeof(T));
+  void io(T& x) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    if (reading_)
+      take(&x, sizeof(T));
+    else
+      append(&x, sizeof(T));
   }
   template <class T>
-  void get(std::vector<T>& v) {
-    std::uint64_t n = 0;
-    get(n);
-    v.resize(static_cast<std::size_t>(n));
-    take(v.data(), v.size() * sizeof(T));
+  requires std::is_trivially_copyable_v<T>
+  void io(std::vector<T>& v) {
+    std::uint64_t n = v.size();
+    io(n);
+    if (reading_) {
+      v.resize(static_cast<std::size_t>(n));
+      take(v.data(), v.size() * sizeof(T));
+    } else {
+      append(v.data(), v.size() * sizeof(T));
+    }
   }
-  void get(std::string& s) {
-    std::vector<char> c;
-    get(c);
+  void io(std::string& s) {
+    std::vector<char> c(s.begin(), s.end());
+    io(c);
     s.assign(c.begin(), c.end());
+  }
+  void io(NodeSet& s) {
+    io(s.name);
+    io(s.dimension);
+    io(s.nodes);
+  }
+  void io(Boundary& b) {
+    io(b.name);
+    io(b.faces);
+  }
+  void io(SectionBoundary& b) {
+    io(b.name);
+    io(b.segments);
+  }
+  /// A vector of structured values, each through its own io().
+  template <class T>
+  requires(!std::is_trivially_copyable_v<T>) void io(std::vector<T>& v) {
+    std::uint64_t n = v.size();
+    io(n);
+    v.resize(static_cast<std::size_t>(n));
+    for (T& x : v) io(x);
   }
 
   std::vector<char> bytes;
 
  private:
+  void append(const void* p, std::size_t n) {
+    const auto* c = static_cast<const char*>(p);
+    bytes.insert(bytes.end(), c, c + n);
+  }
   void take(void* out, std::size_t n) {
     if (at_ + n > bytes.size()) throw std::runtime_error("mesh broadcast: truncated buffer");
     std::memcpy(out, bytes.data() + at_, n);
     at_ += n;
   }
+  bool reading_;
   std::size_t at_ = 0;
 };
 
-}  // namespace
+void describe(Buffer& b, Mesh& m) {
+  b.io(m.nodes);
+  b.io(m.num_vertices);
+  b.io(m.tets);
+  b.io(m.boundaries);
+  b.io(m.node_sets);
+  b.io(m.file_tags);
+  b.io(m.tet_region);
+  b.io(m.region_names);
+}
 
-void broadcast_mesh(Mesh& mesh, MPI_Comm comm, int root) {
+void describe(Buffer& b, SectionMesh& m) {
+  b.io(m.nodes);
+  b.io(m.num_vertices);
+  b.io(m.triangles);
+  b.io(m.boundaries);
+  b.io(m.node_sets);
+  b.io(m.file_tags);
+  b.io(m.triangle_region);
+  b.io(m.region_names);
+}
+
+template <class AnyMesh>
+void broadcast_any(AnyMesh& mesh, MPI_Comm comm, int root) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  Buffer b;
-  if (rank == root) {
-    b.put(mesh.nodes);
-    b.put(mesh.num_vertices);
-    b.put(mesh.tets);
-    b.put(static_cast<std::uint64_t>(mesh.boundaries.size()));
-    for (const Boundary& s : mesh.boundaries) {
-      b.put(s.name);
-      b.put(s.faces);
-    }
-    b.put(static_cast<std::uint64_t>(mesh.node_sets.size()));
-    for (const NodeSet& s : mesh.node_sets) {
-      b.put(s.name);
-      b.put(s.dimension);
-      b.put(s.nodes);
-    }
-    b.put(mesh.file_tags);
-    b.put(mesh.tet_region);
-    b.put(static_cast<std::uint64_t>(mesh.region_names.size()));
-    for (const std::string& name : mesh.region_names) b.put(name);
-  }
+  Buffer b(rank != root);
+  if (rank == root) describe(b, mesh);
   // Sizes beyond 2³¹ bytes go in chunks (MPI counts are int).
   std::uint64_t size = b.bytes.size();
   MPI_Bcast(&size, 1, MPI_UINT64_T, root, comm);
@@ -92,30 +118,14 @@ void broadcast_mesh(Mesh& mesh, MPI_Comm comm, int root) {
     MPI_Bcast(b.bytes.data() + at, static_cast<int>(std::min(kChunk, size - at)), MPI_BYTE, root,
               comm);
   if (rank == root) return;
-  Mesh m;
-  b.get(m.nodes);
-  b.get(m.num_vertices);
-  b.get(m.tets);
-  std::uint64_t count = 0;
-  b.get(count);
-  m.boundaries.resize(static_cast<std::size_t>(count));
-  for (Boundary& s : m.boundaries) {
-    b.get(s.name);
-    b.get(s.faces);
-  }
-  b.get(count);
-  m.node_sets.resize(static_cast<std::size_t>(count));
-  for (NodeSet& s : m.node_sets) {
-    b.get(s.name);
-    b.get(s.dimension);
-    b.get(s.nodes);
-  }
-  b.get(m.file_tags);
-  b.get(m.tet_region);
-  b.get(count);
-  m.region_names.resize(static_cast<std::size_t>(count));
-  for (std::string& name : m.region_names) b.get(name);
+  AnyMesh m;
+  describe(b, m);
   mesh = std::move(m);
 }
+
+}  // namespace
+
+void broadcast_mesh(Mesh& mesh, MPI_Comm comm, int root) { broadcast_any(mesh, comm, root); }
+void broadcast_mesh(SectionMesh& mesh, MPI_Comm comm, int root) { broadcast_any(mesh, comm, root); }
 
 }  // namespace biphasic

@@ -298,23 +298,25 @@ LinearSolverPtr make_petsc_fieldsplit_solver(MPI_Comm comm, const KrylovConfig& 
     const auto owned_p = static_cast<PetscInt>(layout.owned - layout.owned_u);
     const auto first = static_cast<PetscInt>(layout.first_owned);
     petsc_check(ISCreateStride(comm, owned_u, first, 1, &u), "ISCreateStride");
-    petsc_check(ISSetBlockSize(u, 3), "ISSetBlockSize");
+    petsc_check(ISSetBlockSize(u, layout.components), "ISSetBlockSize");
     petsc_check(ISCreateStride(comm, owned_p, first + owned_u, 1, &p), "ISCreateStride");
-    // The rigid-body modes of the owned nodes, picked up by the displacement split's matrix.
-    Vec xyz = nullptr;
-    petsc_check(VecCreateMPI(comm, owned_u, PETSC_DETERMINE, &xyz), "VecCreateMPI");
-    petsc_check(VecSetBlockSize(xyz, 3), "VecSetBlockSize");
-    PetscScalar* a = nullptr;
-    petsc_check(VecGetArray(xyz, &a), "VecGetArray");
-    std::copy(layout.coordinates.begin(), layout.coordinates.end(), a);
-    VecRestoreArray(xyz, &a);
-    MatNullSpace modes = nullptr;
-    petsc_check(MatNullSpaceCreateRigidBody(xyz, &modes), "MatNullSpaceCreateRigidBody");
-    petsc_check(PetscObjectCompose(reinterpret_cast<PetscObject>(u), "nearnullspace",
-                                   reinterpret_cast<PetscObject>(modes)),
-                "PetscObjectCompose");
-    MatNullSpaceDestroy(&modes);
-    VecDestroy(&xyz);
+    if (layout.rigid_body_modes) {
+      // The rigid-body modes of the owned nodes, picked up by the displacement split's matrix.
+      Vec xyz = nullptr;
+      petsc_check(VecCreateMPI(comm, owned_u, PETSC_DETERMINE, &xyz), "VecCreateMPI");
+      petsc_check(VecSetBlockSize(xyz, layout.components), "VecSetBlockSize");
+      PetscScalar* a = nullptr;
+      petsc_check(VecGetArray(xyz, &a), "VecGetArray");
+      std::copy(layout.coordinates.begin(), layout.coordinates.end(), a);
+      VecRestoreArray(xyz, &a);
+      MatNullSpace modes = nullptr;
+      petsc_check(MatNullSpaceCreateRigidBody(xyz, &modes), "MatNullSpaceCreateRigidBody");
+      petsc_check(PetscObjectCompose(reinterpret_cast<PetscObject>(u), "nearnullspace",
+                                     reinterpret_cast<PetscObject>(modes)),
+                  "PetscObjectCompose");
+      MatNullSpaceDestroy(&modes);
+      VecDestroy(&xyz);
+    }
     petsc_check(PCFieldSplitSetIS(pc, "u", u), "PCFieldSplitSetIS");
     petsc_check(PCFieldSplitSetIS(pc, "p", p), "PCFieldSplitSetIS");
     ISDestroy(&u);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "biphasic/fe/tet_geometry.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 
@@ -31,12 +32,32 @@ std::pair<Point, Point> bounding_box(const Mesh& mesh) {
 
 AssemblyScope subdomain_scope(const Mesh& whole, const Subdomain& sub) {
   AssemblyScope s;
-  s.element_owned = sub.tet_owned;
+  s.element_owned = sub.element_owned;
   s.node_owned = sub.node_owned;
   s.mean_element_length = mean_element_length(whole);
   std::tie(s.lower, s.upper) = bounding_box(whole);
   s.region_used.assign(whole.region_names.size(), 0);
   for (std::size_t e = 0; e < whole.tets.size(); ++e)
+    if (!s.region_used.empty())
+      s.region_used[static_cast<std::size_t>(whole.region_of(static_cast<Index>(e)))] = 1;
+  return s;
+}
+
+AssemblyScope subdomain_scope(const SectionMesh& whole, const SectionSubdomain& sub,
+                              SectionModel model) {
+  AssemblyScope s;
+  s.element_owned = sub.element_owned;
+  s.node_owned = sub.node_owned;
+  s.section_depth = section_mean_depth(whole, model);
+  s.lower = {1e300, 1e300, 0.0};
+  s.upper = {-1e300, -1e300, 0.0};
+  for (const Point2& x : whole.nodes)
+    for (std::size_t c = 0; c < 2; ++c) {
+      s.lower[c] = std::min(s.lower[c], x[c]);
+      s.upper[c] = std::max(s.upper[c], x[c]);
+    }
+  s.region_used.assign(whole.region_names.size(), 0);
+  for (std::size_t e = 0; e < whole.triangles.size(); ++e)
     if (!s.region_used.empty())
       s.region_used[static_cast<std::size_t>(whole.region_of(static_cast<Index>(e)))] = 1;
   return s;

@@ -66,6 +66,16 @@ Eigen::Vector3d line3_derivatives(double x) {
   return {4.0 * x - 3.0, 4.0 * x - 1.0, 4.0 - 8.0 * x};
 }
 
+/// Adds a triangle's measure (Σ w_q: dX dY, or 2πR dR dZ) and its area (Σ w_q / 2πR_q
+/// axisymmetric) [mm², or mm³ and mm²].
+void accumulate_measure(const std::vector<SectionPointGeometry>& points, bool axisymmetric,
+                        double& measure, double& area) {
+  for (const SectionPointGeometry& g : points) {
+    measure += g.weight;
+    area += axisymmetric ? g.weight * g.inverse_radius / (2.0 * std::numbers::pi) : g.weight;
+  }
+}
+
 /// The extent of the mesh along x/r and y/z [mm].
 Eigen::Vector2d mesh_extent(const SectionMesh& mesh) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
@@ -79,15 +89,27 @@ Eigen::Vector2d mesh_extent(const SectionMesh& mesh) {
 
 }  // namespace
 
-SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config)
+SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config,
+                               AssemblyScope scope)
     : mesh_(mesh),
       model_(model),
       curves_(config.curves),
       laws_{make_material_laws(config.material)},
-      platens_(mesh, model == SectionModel::Axisymmetric, config, curves_),
+      platens_(scope.platens
+                   ? RigidPlatens()
+                   : RigidPlatens(mesh, model == SectionModel::Axisymmetric, config, curves_)),
       pattern_(mesh, platens_.couplings()) {
   const bool axisymmetric = model == SectionModel::Axisymmetric;
   const std::size_t num_elements = mesh.triangles.size();
+  const bool whole = scope.whole_mesh();
+  for (Index e = 0; e < static_cast<Index>(num_elements); ++e)
+    if (whole || scope.element_owned[static_cast<std::size_t>(e)]) elements_.push_back(e);
+  // Face loads go to the rows of owned nodes only (row → node: u rows 2n + c, p rows by vertex).
+  auto row_owned = [&](Index row) {
+    if (whole) return true;
+    const Index node = row < pattern_.num_u() ? row / 2 : row - pattern_.num_u();
+    return scope.node_owned[static_cast<std::size_t>(node)] != 0;
+  };
   // Material regions, as in the three-dimensional problem.
   std::vector<int> region_law(mesh.region_names.size(), 0);
   for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
@@ -105,11 +127,19 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     for (std::size_t e = 0; e < num_elements; ++e)
       element_law_[e] = region_law[static_cast<std::size_t>(mesh.region_of(static_cast<Index>(e)))];
   }
+  // The largest H_A and k(1) over the laws some triangle of the whole mesh uses (a part: the
+  // regions the whole mesh has, AssemblyScope::region_used).
   double HA = 0.0, k_ref = 0.0;
-  for (std::size_t e = 0; e < std::max<std::size_t>(num_elements, 1); ++e) {
-    const MaterialLaws& laws = num_elements ? laws_of(static_cast<Index>(e)) : laws_[0];
+  auto include_laws = [&](const MaterialLaws& laws) {
     HA = std::max(HA, laws.p_wave_modulus());
     k_ref = std::max(k_ref, laws.reference_permeability());
+  };
+  if (whole || element_law_.empty()) {
+    for (std::size_t e = 0; e < std::max<std::size_t>(num_elements, 1); ++e)
+      include_laws(num_elements ? laws_of(static_cast<Index>(e)) : laws_[0]);
+  } else {
+    for (std::size_t r = 0; r < region_law.size(); ++r)
+      if (scope.region_used[r]) include_laws(laws_[static_cast<std::size_t>(region_law[r])]);
   }
   modulus_ = HA;
 
@@ -129,10 +159,7 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     } catch (const std::domain_error& err) {
       throw std::runtime_error("triangle " + std::to_string(e) + ": " + err.what());
     }
-    for (const SectionPointGeometry& g : geometry_[e]) {
-      measure += g.weight;
-      area += axisymmetric ? g.weight * g.inverse_radius / (2.0 * std::numbers::pi) : g.weight;
-    }
+    accumulate_measure(geometry_[e], axisymmetric, measure, area);
     if (sized) {
       const double h = triangle_length(point(mesh, tri[0]), point(mesh, tri[1]),
                                        point(mesh, tri[2]), config.stabilisation.length);
@@ -144,7 +171,7 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   }
   stabilisation_.finish();  // a term no element has is absent (has_gls(), ...)
   // Mean depth of the measure: 1 mm in plane strain, 2πR̄ axisymmetric.
-  const double depth = area > 0.0 ? measure / area : 1.0;
+  const double depth = !whole ? scope.section_depth : area > 0.0 ? measure / area : 1.0;
   row_scale_u_ = HA * depth;
   row_scale_p_ = k_ref * depth;
 
@@ -245,17 +272,27 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
           throw std::runtime_error(bc_label(i, bc) +
                                    ": a two-dimensional model has no third traction component");
         NodalLoad nl{{}, bc.type == BcType::Traction ? 1.0 : bc.value, curve};
-        nl.entries.assign(load.begin(), load.end());
+        for (const auto& entry : load)
+          if (row_owned(entry.first)) nl.entries.push_back(entry);
         nodal_loads_.push_back(std::move(nl));
         break;
       }
-      case BcType::RigidPlaten:  // platens_
+      case BcType::RigidPlaten:  // platens_, or the caller's (scope.platens): reaction rows
+        if (scope.platens) {
+          std::vector<Index>& held = held_rows_[bc.boundary];
+          for (Index n : target.nodes) held.push_back(pattern_.u_dof(n, bc.component));
+        }
         break;
     }
   }
+  // The whole mesh's extent (a part: its bounding box from the scope).
+  const Eigen::Vector2d extent =
+      whole ? mesh_extent(mesh)
+            : Eigen::Vector2d(scope.upper[0] - scope.lower[0], scope.upper[1] - scope.lower[1])
+                  .cwiseMax(1e-300);
   // Axisymmetric: u_r = 0 on the axis.
   if (axisymmetric) {
-    const double tol = 1e-10 * mesh_extent(mesh).maxCoeff();
+    const double tol = 1e-10 * extent.maxCoeff();
     for (Index n = 0; n < mesh.num_nodes(); ++n)
       if (std::abs(mesh.nodes[n][0]) <= tol)
         constrain(kAxis, pattern_.u_dof(n, 0), 0.0, nullptr, n, kHeldAtZero);
@@ -268,7 +305,6 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   }
   // Scales the boundary data imply (as BiphasicProblem's).
-  const Eigen::Vector2d extent = mesh_extent(mesh);
   double us = 0.0, ps = 0.0;
   for (const BoundaryCondition& bc : config.bcs) {
     const double v = largest_value(bc, config.curves, config.time.t_end);
@@ -284,6 +320,8 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
   }
   solution_scales_ = {us, ps};
   platens_.raise_solution_scales(config, HA, extent.data(), solution_scales_);
+  if (scope.platens)
+    scope.platens->raise_solution_scales(config, HA, extent.data(), solution_scales_);
 
   // Volume loads from the case's formulas.
   const auto& bf = config.loads.body_force;
@@ -306,6 +344,18 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
     set_fluid_source(field(config.loads.fluid_source),
                      field(config.loads.fluid_source.derivative(V::T)));
   }
+}
+
+double section_mean_depth(const SectionMesh& mesh, SectionModel model) {
+  double measure = 0.0, area = 0.0;
+  std::vector<SectionPointGeometry> points;
+  for (const Tri6& tri : mesh.triangles) {
+    Eigen::Matrix<double, 6, 2> X;
+    for (int a = 0; a < 6; ++a) X.row(a) = point(mesh, tri[a]).transpose();
+    section_point_geometry(X, model, points);
+    accumulate_measure(points, model == SectionModel::Axisymmetric, measure, area);
+  }
+  return area > 0.0 ? measure / area : 1.0;
 }
 
 void SectionProblem::set_body_force(VectorField b, VectorField rate) {
@@ -356,11 +406,11 @@ Vec3 SectionProblem::point_position(Index e, std::size_t q) const {
 
 void SectionProblem::add_volume_loads(double t, bool rate, double* out) const {
   if (!body_force_ && !source_) return;
-  for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
-    const Tri6& tri = mesh_.triangles[e];
+  for (const Index e : elements_) {
+    const Tri6& tri = mesh_.triangles[static_cast<std::size_t>(e)];
     for (std::size_t q = 0; q < geometry_[e].size(); ++q) {
       const SectionPointGeometry& g = geometry_[e][q];
-      const Vec3 X = point_position(static_cast<Index>(e), q);
+      const Vec3 X = point_position(e, q);
       if (body_force_) {
         const Vec3 b = !rate              ? body_force_(X, t)
                        : body_force_rate_ ? body_force_rate_(X, t)
@@ -414,9 +464,9 @@ void SectionProblem::element(Index e, const double* y, const double* ydot, bool 
 void SectionProblem::assemble(double t, const double* y, const double* ydot, double* F) {
   std::fill(F, F + size(), 0.0);
   SectionElementOutput out;
-  for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
-    element(static_cast<Index>(e), y, ydot, false, out);
-    const Tri6& tri = mesh_.triangles[e];
+  for (const Index e : elements_) {
+    element(e, y, ydot, false, out);
+    const Tri6& tri = mesh_.triangles[static_cast<std::size_t>(e)];
     for (int s = 0; s < kSectionElementDofs; ++s) F[pattern_.global_dof(tri, s)] += out.residual(s);
   }
   for (const NodalLoad& l : nodal_loads_) {
@@ -458,13 +508,12 @@ void SectionProblem::jacobian(double /*t*/, const double* y, const double* ydot,
   std::fill(values, values + pattern_.nnz(), 0.0);
   if (rate_values) std::fill(rate_values, rate_values + pattern_.nnz(), 0.0);
   SectionElementOutput out;
-  for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
-    const auto el = static_cast<Index>(e);
+  for (const Index el : elements_) {
+    const Tri6& tri = mesh_.triangles[static_cast<std::size_t>(el)];
     element(el, y, ydot, true, out);
-    pattern_.scatter(el, mesh_.triangles[e], out.dfdy, out.dfdydot, cj, dirichlet_held_, values);
+    pattern_.scatter(el, tri, out.dfdy, out.dfdydot, cj, dirichlet_held_, values);
     if (rate_values)
-      pattern_.scatter(el, mesh_.triangles[e], out.dfdydot, out.dfdydot, 0.0, dirichlet_held_,
-                       rate_values);
+      pattern_.scatter(el, tri, out.dfdydot, out.dfdydot, 0.0, dirichlet_held_, rate_values);
   }
   platens_.jacobian(values, rate_values);
   for (const Dirichlet& d : dirichlet_) values[pattern_.find(d.dof, d.dof)] = dirichlet_scale(d);
@@ -501,11 +550,12 @@ FluidRates SectionProblem::fluid_rates(double t, const double* y, const double* 
 
 double SectionProblem::volume_change(const double* y) const {
   double sum = 0.0;
-  for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
+  for (const Index e : elements_) {
+    const Tri6& tri = mesh_.triangles[static_cast<std::size_t>(e)];
     Eigen::Matrix<double, 2, 6> u;
     for (int a = 0; a < 6; ++a)
-      for (int i = 0; i < 2; ++i) u(i, a) = y[pattern_.u_dof(mesh_.triangles[e][a], i)];
-    for (const SectionPointGeometry& g : geometry_[e]) {
+      for (int i = 0; i < 2; ++i) u(i, a) = y[pattern_.u_dof(tri[a], i)];
+    for (const SectionPointGeometry& g : geometry_[static_cast<std::size_t>(e)]) {
       // J − 1 = det(I + H) − 1 = (tr H₂ + det H₂)(1 + h) + h, H₂ the in-plane block, h the hoop
       // strain u_r/R: no cancellation at small strain.
       const Eigen::Matrix2d H = u * g.dN;
@@ -519,7 +569,7 @@ double SectionProblem::volume_change(const double* y) const {
 
 double SectionProblem::gls_time_scale() const {
   double time = 0.0;
-  for (Index e = 0; e < num_elements(); ++e) {
+  for (const Index e : elements_) {
     const double ce = gls_coefficient(e);
     if (!(ce > 0.0)) continue;
     const double te = ce / laws_of(e).p_wave_modulus();
@@ -530,14 +580,14 @@ double SectionProblem::gls_time_scale() const {
 
 void SectionProblem::pressure_schur_term(double cj, double cj_gls,
                                          std::vector<PressureEntry>& out) const {
-  out.reserve(out.size() + 9 * mesh_.triangles.size());
-  for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
-    const double w = cj / (laws_of(static_cast<Index>(e)).p_wave_modulus() +
-                           cj_gls * gls_coefficient(static_cast<Index>(e)));
+  out.reserve(out.size() + 9 * elements_.size());
+  for (const Index e : elements_) {
+    const double w = cj / (laws_of(e).p_wave_modulus() + cj_gls * gls_coefficient(e));
     // P1 mass matrix with the element's own measure: ∫ N^p_a N^p_b dΩ₀ by its quadrature rule.
     Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-    for (const SectionPointGeometry& g : geometry_[e]) M += g.weight * g.Np * g.Np.transpose();
-    const Tri6& tri = mesh_.triangles[e];
+    for (const SectionPointGeometry& g : geometry_[static_cast<std::size_t>(e)])
+      M += g.weight * g.Np * g.Np.transpose();
+    const Tri6& tri = mesh_.triangles[static_cast<std::size_t>(e)];
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) out.push_back({tri[a], tri[b], w * M(a, b)});
   }

@@ -3,9 +3,18 @@
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace biphasic {
 
 N_Vector SemidiscreteSystem::new_vector(SUNContext ctx) const { return N_VNew_Serial(size(), ctx); }
+
+double SemidiscreteSystem::max_norm(const double* v) const {
+  double m = 0.0;
+  for (Index i = 0; i < size(); ++i) m = std::max(m, std::abs(v[i]));
+  return m;
+}
 
 SUNMatrix SemidiscreteSystem::new_jacobian_matrix(SUNContext ctx) const {
   return pattern().new_matrix(ctx);

@@ -29,6 +29,24 @@ inline Config every_condition() {
   return cfg;
 }
 
+/// The same on a section rectangle (generate_section_rectangle's curves axis, lateral, bottom,
+/// top) of a two-dimensional model: a ramped axial displacement, the axis held by symmetry in
+/// plane strain (by the model itself when axisymmetric), a drained lateral side under a traction
+/// and a normal traction, a flux through the top, GLS.
+inline Config every_section_condition(ModelKind model) {
+  Config cfg = every_condition();
+  cfg.model = model;
+  cfg.bcs = {{BcType::Displacement, "top", 1, -0.05, {}, "ramp"},
+             {BcType::Displacement, "bottom", 1, 0.0, {}, ""},
+             {BcType::Pressure, "lateral", 0, 0.0, {}, ""},
+             {BcType::Traction, "lateral", 0, 0.0, {0.01, 0.02, 0.0}, "ramp"},
+             {BcType::NormalTraction, "lateral", 0, 0.04, {}, "ramp"},
+             {BcType::Flux, "top", 0, 2e-3, {}, "ramp"}};
+  if (model == ModelKind::PlaneStrain)
+    cfg.bcs.push_back({BcType::Symmetry, "axis", 0, 0.0, {}, ""});
+  return cfg;
+}
+
 /// A random state of `problem` (a BiphasicProblem or SectionProblem; u ~ 0.02 mm, p ~ 0.05 MPa,
 /// rates a tenth of those per second) with its Dirichlet values set at time t; the same for the
 /// same seed.

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""`mpiexec -n N biphasic run CASE` against `biphasic run CASE` on one process (ctest label mpi).
+"""`mpiexec -n N biphasic run CASE` against `biphasic run CASE` on one process (ctest label mpi),
+three-dimensional or two-dimensional.
 
 The line probe (every row, u and p) and the reactions (every output) must agree to 1e-8 of
 their largest value, with the same Newton iterations step by step; with rigid platens, so must
@@ -112,8 +113,9 @@ def main():
                 failures.append(f"{key}: {a_count} on one process, {b_count} on {processes}")
         if p.get("status") != "completed" or p["parallel"]["processes"] != int(processes):
             failures.append("summary: status or process count wrong")
-        if sum(p["parallel"]["owned_elements"]) != p["mesh"]["tetrahedra"]:
-            failures.append("summary: owned elements do not add up to the mesh")
+        elements = p["mesh"].get("tetrahedra", p["mesh"].get("triangles"))
+        if sum(p["parallel"]["owned_elements"]) != elements or s.get("model") != p.get("model"):
+            failures.append("summary: owned elements do not add up to the mesh, or another model")
         # Input refused before any work: exit status 1, the message printed once (process 0).
         refused = subprocess.run([mpiexec, "--oversubscribe", "-n", processes, biphasic, "run",
                                   case, "-o", os.path.join(tmp, "refused"), "--set",

@@ -40,7 +40,7 @@ class DistributedAssemblyTest : public ::testing::TestWithParam<bool> {
     dist_ = std::make_unique<DistributedAssembly>(mesh_, config_, PETSC_COMM_WORLD);
     // Serial unknown of each rank-major unknown.
     const PartitionedNumbering& num = dist_->numbering();
-    const std::vector<Index> rank_major = rank_major_of_whole(mesh_, num);
+    const std::vector<Index> rank_major = rank_major_of_whole(mesh_.num_vertices, num);
     serial_of_.assign(static_cast<std::size_t>(num.size()), -1);
     for (std::size_t i = 0; i < rank_major.size(); ++i)
       serial_of_[static_cast<std::size_t>(rank_major[i])] = static_cast<Index>(i);

@@ -3,7 +3,7 @@
 // every kind of boundary condition, and the Newton iterations step by step. Solved by the
 // parallel MUMPS called directly (double and mixed precision, the mesh's nested-dissection
 // order and PORD), by SuperLU_DIST through PETSc, and by FGMRES with the field-split
-// preconditioner.
+// preconditioner; on tetrahedra and on the sections of both two-dimensional models.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,18 +14,35 @@
 #include "../common/box_mesh.hpp"
 #include "../common/every_condition.hpp"
 #include "biphasic/parallel/distributed_system.hpp"
+#include "biphasic/physics/section_problem.hpp"
 #include "biphasic/time/backward_euler.hpp"
 
 namespace biphasic {
 namespace {
 
-/// Four steps on one process (UMFPACK) and on the distributed system with `solver`: the same
-/// Newton iterations and every unknown within `tolerance` of the largest of its field.
-void expect_same_run(const Config& config, const LinearSolverConfig& solver, double tolerance) {
-  const Mesh mesh = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
+/// A section rectangle for the two-dimensional models.
+SectionMesh section_mesh() {
+  SectionRectangleSpec spec;
+  spec.width = 1.0;
+  spec.height = 1.2;
+  spec.nr = 4;
+  spec.nz = 5;
+  return generate_section_rectangle(spec);
+}
 
+BiphasicProblem one_process_problem(const Mesh& mesh, const Config& config) {
+  return BiphasicProblem(mesh, config);
+}
+SectionProblem one_process_problem(const SectionMesh& mesh, const Config& config) {
+  return SectionProblem(mesh, section_model(config.model), config);
+}
+
+/// expect_same_run on `mesh`.
+template <class AnyMesh>
+void expect_same_run_on(const AnyMesh& mesh, const Config& config, const LinearSolverConfig& solver,
+                        double tolerance) {
   // One process: UMFPACK (the sequential MUMPS is not part of the MPI build).
-  BiphasicProblem whole(mesh, config);
+  auto whole = one_process_problem(mesh, config);
   LinearSolverConfig serial_solver;
   serial_solver.type = LinearSolverType::Umfpack;
   BackwardEuler serial(whole, config.time, serial_solver);
@@ -51,7 +68,7 @@ void expect_same_run(const Config& config, const LinearSolverConfig& solver, dou
 
   // Owned unknown k is rank-major unknown first_owned() + k.
   const PartitionedNumbering& num = assembly.numbering();
-  const std::vector<Index> rank_major = rank_major_of_whole(mesh, num);
+  const std::vector<Index> rank_major = rank_major_of_whole(mesh.num_vertices, num);
   std::vector<Index> serial_of(rank_major.size());
   for (std::size_t i = 0; i < rank_major.size(); ++i)
     serial_of[static_cast<std::size_t>(rank_major[i])] = static_cast<Index>(i);
@@ -70,8 +87,19 @@ void expect_same_run(const Config& config, const LinearSolverConfig& solver, dou
   }
 }
 
-Config four_steps(const std::string& stabilisation) {
-  Config config = test::every_condition();
+/// Four steps on one process (UMFPACK) and on the distributed system with `solver`: the same
+/// Newton iterations and every unknown within `tolerance` of the largest of its field. On the
+/// box of tetrahedra for a three-dimensional `config`, else on section_mesh().
+void expect_same_run(const Config& config, const LinearSolverConfig& solver, double tolerance) {
+  if (is_two_dimensional(config.model))
+    expect_same_run_on(section_mesh(), config, solver, tolerance);
+  else
+    expect_same_run_on(test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2}), config, solver, tolerance);
+}
+
+Config four_steps(const std::string& stabilisation, ModelKind model = ModelKind::ThreeDimensional) {
+  Config config =
+      is_two_dimensional(model) ? test::every_section_condition(model) : test::every_condition();
   config.stabilisation.type = stabilisation;
   config.time.dt = 0.5;
   config.time.t_end = 2.0;
@@ -86,7 +114,11 @@ TEST(DistributedBackwardEuler, ParallelMumpsMatchesTheOneProcessRun) {
       LinearSolverConfig solver;
       solver.precision = precision;
       solver.ordering = ordering;
-      expect_same_run(four_steps("gls"), solver, 1e-8);
+      for (const ModelKind model :
+           {ModelKind::ThreeDimensional, ModelKind::PlaneStrain, ModelKind::Axisymmetric}) {
+        SCOPED_TRACE(to_string(model));
+        expect_same_run(four_steps("gls", model), solver, 1e-8);
+      }
     }
 }
 
@@ -96,6 +128,7 @@ TEST(DistributedBackwardEuler, SuperluDistMatchesTheOneProcessRun) {
     LinearSolverConfig solver;
     solver.type = LinearSolverType::SuperluDist;
     expect_same_run(four_steps(stabilisation), solver, 1e-8);
+    expect_same_run(four_steps(stabilisation, ModelKind::Axisymmetric), solver, 1e-8);
   }
 }
 
@@ -105,7 +138,11 @@ TEST(DistributedBackwardEuler, FieldSplitFgmresMatchesTheOneProcessRun) {
     LinearSolverConfig solver;
     solver.type = LinearSolverType::Iterative;
     solver.krylov.rtol = 1e-10;
-    expect_same_run(four_steps(stabilisation), solver, 1e-7);
+    for (const ModelKind model :
+         {ModelKind::ThreeDimensional, ModelKind::PlaneStrain, ModelKind::Axisymmetric}) {
+      SCOPED_TRACE(to_string(model));
+      expect_same_run(four_steps(stabilisation, model), solver, 1e-7);
+    }
   }
 }
 

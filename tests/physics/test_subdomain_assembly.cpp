@@ -9,6 +9,9 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "biphasic/mesh/partition.hpp"
 #include "biphasic/physics/assembly_scope.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 namespace {
@@ -34,6 +38,19 @@ Mesh test_mesh() {
       z += 0.25 * mesh.nodes[static_cast<std::size_t>(mesh.tets[t][c])][2];
     mesh.tet_region[t] = z < 0.6 ? 0 : 1;
   }
+  return mesh;
+}
+
+/// A section rectangle (axis, lateral, bottom, top) for a two-dimensional model.
+SectionMesh test_section() {
+  SectionRectangleSpec spec;
+  spec.width = 1.2;
+  spec.height = 1.8;
+  spec.nr = 3;
+  spec.nz = 6;
+  SectionMesh mesh = generate_section_rectangle(spec);
+  mesh.region_names = {"lower", "upper"};
+  mesh.triangle_region.assign(mesh.triangles.size(), 0);
   return mesh;
 }
 
@@ -69,9 +86,9 @@ TEST(Partition, CoversEveryElementOnceAndNumbersEveryUnknownOnce) {
       const Subdomain sub = extract_subdomain(mesh, p, r);
       EXPECT_NO_THROW(check_mesh(sub.mesh));
       Index owned = 0;
-      for (std::size_t e = 0; e < sub.global_tet.size(); ++e)
-        if (sub.tet_owned[e]) {
-          ++owned_count[static_cast<std::size_t>(sub.global_tet[e])];
+      for (std::size_t e = 0; e < sub.global_element.size(); ++e)
+        if (sub.element_owned[e]) {
+          ++owned_count[static_cast<std::size_t>(sub.global_element[e])];
           ++owned;
         }
       EXPECT_GT(owned, 0);
@@ -84,7 +101,7 @@ TEST(Partition, CoversEveryElementOnceAndNumbersEveryUnknownOnce) {
     EXPECT_TRUE(std::all_of(owned_count.begin(), owned_count.end(), [](int c) { return c == 1; }));
     // The rank-major numbering is a bijection onto [0, N), each part one contiguous range.
     const PartitionedNumbering num = number_unknowns(mesh, p);
-    const std::vector<Index> map = rank_major_of_whole(mesh, num);
+    const std::vector<Index> map = rank_major_of_whole(mesh.num_vertices, num);
     EXPECT_EQ(num.size(), static_cast<Index>(map.size()));
     std::vector<Index> sorted = map;
     std::sort(sorted.begin(), sorted.end());
@@ -97,62 +114,148 @@ TEST(Partition, CoversEveryElementOnceAndNumbersEveryUnknownOnce) {
   }
 }
 
+TEST(Partition, SplitsASectionAsItSplitsTetrahedra) {
+  const SectionMesh mesh = test_section();
+  for (int parts = 1; parts <= 4; ++parts) {
+    SCOPED_TRACE(parts);
+    const MeshPartition p = partition_mesh(mesh, parts);
+    std::vector<int> owned_count(mesh.triangles.size(), 0);
+    Index segments = 0;
+    for (int r = 0; r < parts; ++r) {
+      const SectionSubdomain sub = extract_subdomain(mesh, p, r);
+      EXPECT_NO_THROW(check_section_mesh(sub.mesh));
+      for (std::size_t e = 0; e < sub.global_element.size(); ++e) {
+        if (sub.element_owned[e]) ++owned_count[static_cast<std::size_t>(sub.global_element[e])];
+        // The part's triangles are the whole mesh's, renumbered.
+        for (int a = 0; a < 6; ++a)
+          ASSERT_EQ(sub.global_node[static_cast<std::size_t>(sub.mesh.triangles[e][a])],
+                    mesh.triangles[static_cast<std::size_t>(sub.global_element[e])][a]);
+      }
+      for (const SectionBoundary& b : sub.mesh.boundaries)
+        segments += static_cast<Index>(b.segments.size());
+    }
+    EXPECT_TRUE(std::all_of(owned_count.begin(), owned_count.end(), [](int c) { return c == 1; }));
+    Index whole_segments = 0;
+    for (const SectionBoundary& b : mesh.boundaries)
+      whole_segments += static_cast<Index>(b.segments.size());
+    // Every segment is in some part (in two when both parts hold its triangle).
+    EXPECT_GE(segments, whole_segments);
+    // Two displacements per node, one pressure per vertex, numbered once each.
+    const PartitionedNumbering num = number_unknowns(mesh, p);
+    EXPECT_EQ(num.components, 2);
+    EXPECT_EQ(num.size(), 2 * mesh.num_nodes() + mesh.num_vertices);
+    std::vector<Index> sorted = rank_major_of_whole(mesh.num_vertices, num);
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], static_cast<Index>(i));
+  }
+}
+
 TEST(Partition, RefusesMorePartsThanElements) {
   const Mesh mesh = test::box_mesh({1, 1, 1}, {1.0, 1.0, 1.0});
   EXPECT_THROW(partition_mesh(mesh, 7), std::invalid_argument);
   EXPECT_THROW(partition_mesh(mesh, 0), std::invalid_argument);
 }
 
-/// The whole problem and every part's problem at one random state.
-struct Split {
-  std::vector<Subdomain> subs;
-  std::vector<std::unique_ptr<BiphasicProblem>> problems;
-  std::vector<SubdomainDofs> dofs;
-  std::vector<std::vector<double>> y, ydot;  ///< per part, its local state
-};
+/// every_section_condition with the two regions of two_region_condition.
+Config section_condition(ModelKind model) {
+  Config cfg = test::every_section_condition(model);
+  cfg.regions = two_region_condition().regions;
+  return cfg;
+}
 
-class SubdomainAssembly : public ::testing::TestWithParam<int> {
+template <class Problem>
+void add_section_loads(Problem& problem) {
+  problem.set_body_force([](const Vec3& X, double t) { return Vec3(0.01 * t, -0.02 * X(1), 0.0); });
+  problem.set_fluid_source([](const Vec3& X, double t) { return 1e-3 * (X(0) + t); });
+}
+
+/// The meshes a part's problem is built on: tetrahedra, or a section.
+enum class Scene { Tetrahedra, PlaneStrain, Axisymmetric };
+
+std::string scene_name(Scene s) {
+  return s == Scene::Tetrahedra    ? "tetrahedra"
+         : s == Scene::PlaneStrain ? "plane_strain"
+                                   : "axisymmetric";
+}
+
+/// The whole problem and every part's problem at one random state (parameter: the scene and
+/// the number of parts). Every check below is one of the BiphasicModel interface, so that it
+/// holds for the tetrahedral and the section problems alike.
+class SubdomainAssembly : public ::testing::TestWithParam<std::tuple<Scene, int>> {
  protected:
   void SetUp() override {
-    mesh_ = test_mesh();
-    const int parts = GetParam();
-    const MeshPartition partition = partition_mesh(mesh_, parts);
-    // With several parts, the upper region is part 0's elements: every part then holds one
-    // region only, and its scales (the stiffest material's) must still be the whole mesh's.
+    const auto [scene, parts] = GetParam();
+    scene_ = scene;
+    if (scene == Scene::Tetrahedra) {
+      mesh_ = test_mesh();
+      reaction_names_ = {"z0", "z1", "x0"};
+      split(mesh_, parts, mesh_.tet_region);
+    } else {
+      section_ = test_section();
+      reaction_names_ = {"bottom", "top"};
+      split(section_, parts, section_.triangle_region);
+    }
+  }
+
+  /// The whole problem on `whole`, then each part's: `regions` (the whole mesh's per element)
+  /// made the upper region on part 0's elements when there are several parts, so that every
+  /// part holds one region only, and its scales (the stiffest material's) must still be the
+  /// whole mesh's.
+  template <class AnyMesh>
+  void split(AnyMesh& whole, int parts, std::vector<int>& regions) {
+    const MeshPartition partition = partition_mesh(whole, parts);
     if (parts > 1)
-      for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
-        mesh_.tet_region[e] = partition.tet_part[e] == 0 ? 1 : 0;
-    config_ = two_region_condition();
-    whole_ = std::make_unique<BiphasicProblem>(mesh_, config_);
-    add_volume_loads(*whole_);
+      for (std::size_t e = 0; e < regions.size(); ++e)
+        regions[e] = partition.element_part[e] == 0 ? 1 : 0;
+    whole_ = make_problem(whole, AssemblyScope{});
     test::random_state(*whole_, kTime, 11, y_, ydot_);
 
-    numbering_ = number_unknowns(mesh_, partition);
-    map_ = rank_major_of_whole(mesh_, numbering_);
+    numbering_ = number_unknowns(whole, partition);
+    map_ = rank_major_of_whole(whole.num_vertices, numbering_);
     const std::size_t n = y_.size();
     std::vector<double> yp(n), ydotp(n);
     for (std::size_t i = 0; i < n; ++i) {
       yp[static_cast<std::size_t>(map_[i])] = y_[i];
       ydotp[static_cast<std::size_t>(map_[i])] = ydot_[i];
     }
-    split_.subs.reserve(static_cast<std::size_t>(parts));
     for (int r = 0; r < parts; ++r) {
-      split_.subs.push_back(extract_subdomain(mesh_, partition, r));
-      const Subdomain& sub = split_.subs.back();
-      split_.problems.push_back(
-          std::make_unique<BiphasicProblem>(sub.mesh, config_, subdomain_scope(mesh_, sub)));
-      BiphasicProblem& local = *split_.problems.back();
-      add_volume_loads(local);
-      split_.dofs.emplace_back(sub, numbering_, local.pattern(), local.constrained());
-      const SubdomainDofs& dofs = split_.dofs.back();
+      auto sub = std::make_unique<decltype(extract_subdomain(whole, partition, r))>(
+          extract_subdomain(whole, partition, r));
+      if constexpr (std::is_same_v<AnyMesh, Mesh>)
+        problems_.push_back(make_problem(sub->mesh, subdomain_scope(whole, *sub)));
+      else
+        problems_.push_back(make_problem(sub->mesh, subdomain_scope(whole, *sub, section_model())));
+      BiphasicModel& local = *problems_.back();
+      dofs_.emplace_back(*sub, numbering_, local.pattern(), local.constrained());
+      const SubdomainDofs& dofs = dofs_.back();
       std::vector<double> yl(static_cast<std::size_t>(local.size())), ydl = yl;
       for (Index i = 0; i < local.size(); ++i) {
         yl[static_cast<std::size_t>(i)] = yp[static_cast<std::size_t>(dofs.global(i))];
         ydl[static_cast<std::size_t>(i)] = ydotp[static_cast<std::size_t>(dofs.global(i))];
       }
-      split_.y.push_back(std::move(yl));
-      split_.ydot.push_back(std::move(ydl));
+      part_y_.push_back(std::move(yl));
+      part_ydot_.push_back(std::move(ydl));
+      keep(std::move(sub));
     }
+  }
+
+  void keep(std::unique_ptr<Subdomain> sub) { tet_parts_.push_back(std::move(sub)); }
+  void keep(std::unique_ptr<SectionSubdomain> sub) { section_parts_.push_back(std::move(sub)); }
+  SectionModel section_model() const {
+    return scene_ == Scene::PlaneStrain ? SectionModel::PlaneStrain : SectionModel::Axisymmetric;
+  }
+  std::unique_ptr<BiphasicModel> make_problem(const Mesh& mesh, AssemblyScope scope) {
+    config_ = two_region_condition();
+    auto p = std::make_unique<BiphasicProblem>(mesh, config_, std::move(scope));
+    add_volume_loads(*p);
+    return p;
+  }
+  std::unique_ptr<BiphasicModel> make_problem(const SectionMesh& mesh, AssemblyScope scope) {
+    config_ = section_condition(scene_ == Scene::PlaneStrain ? ModelKind::PlaneStrain
+                                                             : ModelKind::Axisymmetric);
+    auto p = std::make_unique<SectionProblem>(mesh, section_model(), config_, std::move(scope));
+    add_section_loads(*p);
+    return p;
   }
 
   /// Adds each part's contributing rows of a local vector (made by `local_vector`) into a vector
@@ -160,10 +263,10 @@ class SubdomainAssembly : public ::testing::TestWithParam<int> {
   template <class LocalVector>
   std::vector<double> summed(LocalVector local_vector) {
     std::vector<double> partitioned(y_.size(), 0.0);
-    for (std::size_t r = 0; r < split_.problems.size(); ++r) {
-      std::vector<double> F(static_cast<std::size_t>(split_.problems[r]->size()));
+    for (std::size_t r = 0; r < problems_.size(); ++r) {
+      std::vector<double> F(static_cast<std::size_t>(problems_[r]->size()));
       local_vector(r, F);
-      const SubdomainDofs& dofs = split_.dofs[r];
+      const SubdomainDofs& dofs = dofs_[r];
       for (Index i = 0; i < dofs.size(); ++i)
         if (dofs.contributes(i))
           partitioned[static_cast<std::size_t>(dofs.global(i))] += F[static_cast<std::size_t>(i)];
@@ -175,13 +278,20 @@ class SubdomainAssembly : public ::testing::TestWithParam<int> {
   }
 
   static constexpr double kTime = 1.3;
+  Scene scene_ = Scene::Tetrahedra;
   Mesh mesh_;
+  SectionMesh section_;
   Config config_;
-  std::unique_ptr<BiphasicProblem> whole_;
+  std::vector<std::string> reaction_names_;
+  std::unique_ptr<BiphasicModel> whole_;
   std::vector<double> y_, ydot_;
   PartitionedNumbering numbering_;
   std::vector<Index> map_;
-  Split split_;
+  std::vector<std::unique_ptr<Subdomain>> tet_parts_;  ///< the parts (their meshes in use)
+  std::vector<std::unique_ptr<SectionSubdomain>> section_parts_;
+  std::vector<std::unique_ptr<BiphasicModel>> problems_;
+  std::vector<SubdomainDofs> dofs_;
+  std::vector<std::vector<double>> part_y_, part_ydot_;  ///< per part, its local state
 };
 
 TEST_P(SubdomainAssembly, ResidualAndTimeDerivativeSumToTheWholeMesh) {
@@ -189,10 +299,10 @@ TEST_P(SubdomainAssembly, ResidualAndTimeDerivativeSumToTheWholeMesh) {
   whole_->residual(kTime, y_.data(), ydot_.data(), F.data());
   whole_->time_derivative(kTime, dFdt.data());
   const std::vector<double> sum = summed([&](std::size_t r, std::vector<double>& out) {
-    split_.problems[r]->residual(kTime, split_.y[r].data(), split_.ydot[r].data(), out.data());
+    problems_[r]->residual(kTime, part_y_[r].data(), part_ydot_[r].data(), out.data());
   });
   const std::vector<double> sum_dt = summed([&](std::size_t r, std::vector<double>& out) {
-    split_.problems[r]->time_derivative(kTime, out.data());
+    problems_[r]->time_derivative(kTime, out.data());
   });
   const double scale = max_abs(F), scale_dt = max_abs(dFdt);
   ASSERT_GT(scale, 0.0);
@@ -209,11 +319,11 @@ TEST_P(SubdomainAssembly, JacobianSumsToTheWholeMesh) {
   std::vector<double> values(static_cast<std::size_t>(pattern.nnz())), rates = values;
   whole_->jacobian(kTime, y_.data(), ydot_.data(), cj, values.data(), rates.data());
   std::map<std::pair<Index, Index>, std::pair<double, double>> sum;  // partitioned (row, col)
-  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
-    BiphasicProblem& local = *split_.problems[r];
+  for (std::size_t r = 0; r < problems_.size(); ++r) {
+    BiphasicModel& local = *problems_[r];
     std::vector<double> lv(static_cast<std::size_t>(local.pattern().nnz())), lr = lv;
-    local.jacobian(kTime, split_.y[r].data(), split_.ydot[r].data(), cj, lv.data(), lr.data());
-    for (const SubdomainDofs::Entry& e : split_.dofs[r].entries()) {
+    local.jacobian(kTime, part_y_[r].data(), part_ydot_[r].data(), cj, lv.data(), lr.data());
+    for (const SubdomainDofs::Entry& e : dofs_[r].entries()) {
       auto& s = sum[{e.row, e.col}];
       s.first += lv[static_cast<std::size_t>(e.position)];
       s.second += lr[static_cast<std::size_t>(e.position)];
@@ -242,23 +352,23 @@ TEST_P(SubdomainAssembly, JacobianSumsToTheWholeMesh) {
 }
 
 TEST_P(SubdomainAssembly, ReactionsFluidRatesAndVolumeChangeSumToTheWholeMesh) {
-  const std::vector<std::string> names{"z0", "z1", "x0"};
+  const std::vector<std::string>& names = reaction_names_;
   const auto reactions = whole_->reactions(names, kTime, y_.data(), ydot_.data());
   const FluidRates rates = whole_->fluid_rates(kTime, y_.data(), ydot_.data());
   const double volume = whole_->volume_change(y_.data());
   std::vector<std::array<double, 3>> reaction_sum(reactions.size(), {0.0, 0.0, 0.0});
   FluidRates rate_sum;
   double volume_sum = 0.0, gls_time = 0.0;
-  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
-    BiphasicProblem& local = *split_.problems[r];
-    const auto part = local.reactions(names, kTime, split_.y[r].data(), split_.ydot[r].data());
+  for (std::size_t r = 0; r < problems_.size(); ++r) {
+    BiphasicModel& local = *problems_[r];
+    const auto part = local.reactions(names, kTime, part_y_[r].data(), part_ydot_[r].data());
     for (std::size_t b = 0; b < part.size(); ++b)
       for (int c = 0; c < 3; ++c) reaction_sum[b][c] += part[b][c];
-    const FluidRates f = local.fluid_rates(kTime, split_.y[r].data(), split_.ydot[r].data());
+    const FluidRates f = local.fluid_rates(kTime, part_y_[r].data(), part_ydot_[r].data());
     rate_sum.drained += f.drained;
     rate_sum.prescribed += f.prescribed;
     rate_sum.source += f.source;
-    volume_sum += local.volume_change(split_.y[r].data());
+    volume_sum += local.volume_change(part_y_[r].data());
     const double t = local.gls_time_scale();
     gls_time = r == 0 ? t : std::min(gls_time, t);
   }
@@ -276,11 +386,11 @@ TEST_P(SubdomainAssembly, ReactionsFluidRatesAndVolumeChangeSumToTheWholeMesh) {
 }
 
 TEST_P(SubdomainAssembly, EveryPartSetsItsDirichletUnknownsAsTheWholeMeshDoes) {
-  for (std::size_t r = 0; r < split_.problems.size(); ++r) {
-    BiphasicProblem& local = *split_.problems[r];
+  for (std::size_t r = 0; r < problems_.size(); ++r) {
+    BiphasicModel& local = *problems_[r];
     std::vector<double> y(static_cast<std::size_t>(local.size()), 7.0), ydot = y;
     local.apply_dirichlet(kTime, y.data(), ydot.data());
-    const SubdomainDofs& dofs = split_.dofs[r];
+    const SubdomainDofs& dofs = dofs_[r];
     EXPECT_EQ(local.solution_scales(), whole_->solution_scales());
     EXPECT_EQ(local.stiffness_scale(), whole_->stiffness_scale());
     EXPECT_EQ(local.conductance_scale(), whole_->conductance_scale());
@@ -297,7 +407,14 @@ TEST_P(SubdomainAssembly, EveryPartSetsItsDirichletUnknownsAsTheWholeMeshDoes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Parts, SubdomainAssembly, ::testing::Values(1, 2, 3, 4));
+INSTANTIATE_TEST_SUITE_P(Parts, SubdomainAssembly,
+                         ::testing::Combine(::testing::Values(Scene::Tetrahedra, Scene::PlaneStrain,
+                                                              Scene::Axisymmetric),
+                                            ::testing::Values(1, 2, 3, 4)),
+                         [](const ::testing::TestParamInfo<std::tuple<Scene, int>>& param) {
+                           return scene_name(std::get<0>(param.param)) + "_" +
+                                  std::to_string(std::get<1>(param.param));
+                         });
 
 }  // namespace
 }  // namespace biphasic

@@ -12,8 +12,9 @@ namespace biphasic {
 
 class SubdomainDofs {
  public:
-  /// `pattern` and `constrained` are those of the part's problem on `sub.mesh`.
-  SubdomainDofs(const Subdomain& sub, const PartitionedNumbering& numbering,
+  /// `pattern` and `constrained` are those of the part's problem on the part's mesh (a
+  /// Subdomain's or a SectionSubdomain's); the pattern must outlive this object.
+  SubdomainDofs(const SubdomainMap& sub, const PartitionedNumbering& numbering,
                 const SparsityPattern& pattern, const std::vector<char>& constrained);
 
   /// Number of local unknowns (the part's problem's size()).
@@ -35,15 +36,19 @@ class SubdomainDofs {
   struct Entry {
     Index row, col, position;
   };
-  /// Every entry of the part's pattern in a contributing row whose column is a node an owned
-  /// element touches (other columns couple only through ghost elements and stay zero), in CSC
-  /// order.
-  const std::vector<Entry>& entries() const { return entries_; }
+  /// Column j of the part's matrix belongs to a node an owned element touches: the other
+  /// columns couple only through ghost elements and stay zero.
+  bool touched(Index j) const { return touched_[static_cast<std::size_t>(j)] != 0; }
+  /// Entry (i, j) of the part's matrix is added to the whole system's: row i contributes and
+  /// column j is touched.
+  bool contributes(Index i, Index j) const { return contributes(i) && touched(j); }
+  /// Every contributed entry of the part's pattern, in CSC order (made on each call).
+  std::vector<Entry> entries() const;
 
  private:
   std::vector<Index> global_, owned_;
-  std::vector<char> contributes_;
-  std::vector<Entry> entries_;
+  std::vector<char> contributes_, touched_;
+  const SparsityPattern* pattern_;
   Index first_owned_ = 0;
 };
 

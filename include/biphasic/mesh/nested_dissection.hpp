@@ -1,10 +1,12 @@
-// A fill-reducing elimination order of a tetrahedral mesh's nodes, for direct solvers that are
-// handed an order instead of computing one (the parallel MUMPS here has no METIS of its own).
+// A fill-reducing elimination order of a mesh's nodes (tetrahedra or triangles), for direct solvers
+// that are handed an order instead of computing one (the parallel MUMPS here has no METIS of its
+// own).
 #pragma once
 
 #include <vector>
 
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic {
 
@@ -15,5 +17,7 @@ namespace biphasic {
 /// ordering it costs a fraction of ordering the matrix (4 unknowns per vertex, about 10 per
 /// vertex with the edge nodes' displacements) and gives the same separators.
 std::vector<Index> nested_dissection_node_order(const Mesh& mesh);
+/// The same over the triangles of a section mesh.
+std::vector<Index> nested_dissection_node_order(const SectionMesh& mesh);
 
 }  // namespace biphasic

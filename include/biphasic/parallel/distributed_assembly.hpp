@@ -3,9 +3,10 @@
 //
 // Every process holds the whole mesh (mesh 4: 6 MB, against 365 MB for its Jacobian), partitions it
 // the same way (METIS on process 0, broadcast), and builds the problem of its own part
-// (mesh/partition.hpp, physics/assembly_scope.hpp). The unknowns are numbered rank-major: each
-// process owns one contiguous range, displacements interlaced per node. A residual or Jacobian is
-// assembled by each process on its own elements with the one-process element kernels; PETSc adds
+// (mesh/partition.hpp, physics/assembly_scope.hpp): a BiphasicProblem on tetrahedra, a
+// SectionProblem on the triangles of a two-dimensional model. The unknowns are numbered rank-major:
+// each process owns one contiguous range, displacements interlaced per node. A residual or Jacobian
+// is assembled by each process on its own elements with the one-process element kernels; PETSc adds
 // the parts' contributions (a reverse scatter for the residual, the COO interface for the matrix,
 // whose pattern is set once). Rigid platens are then posed on the summed rows
 // (parallel/distributed_platens.hpp).
@@ -22,6 +23,7 @@
 #include "biphasic/mesh/partition.hpp"
 #include "biphasic/parallel/distributed_platens.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
+#include "biphasic/physics/section_problem.hpp"
 
 namespace biphasic {
 
@@ -31,6 +33,9 @@ class DistributedAssembly {
   /// the assembly). Collective. Throws std::runtime_error naming the process on a failure of
   /// its part (a bad boundary condition is reported by every process alike).
   DistributedAssembly(const Mesh& mesh, const Config& config, MPI_Comm comm);
+  /// The same for the section of a two-dimensional model (config.model plane strain or
+  /// axisymmetric).
+  DistributedAssembly(const SectionMesh& mesh, const Config& config, MPI_Comm comm);
   ~DistributedAssembly();
   DistributedAssembly(const DistributedAssembly&) = delete;
   DistributedAssembly& operator=(const DistributedAssembly&) = delete;
@@ -43,15 +48,24 @@ class DistributedAssembly {
   Index first_owned() const { return dofs_->first_owned(); }
   /// The rank-major numbering of the whole mesh's unknowns.
   const PartitionedNumbering& numbering() const { return numbering_; }
-  const Subdomain& subdomain() const { return sub_; }
+  /// This process's part of the mesh against the whole.
+  const SubdomainMap& subdomain() const { return *map_; }
   /// This process's problem on its part of the mesh.
-  BiphasicProblem& local_problem() { return *problem_; }
+  BiphasicModel& local_problem() { return *problem_; }
+  /// The same as a tetrahedral problem (null for a two-dimensional model).
+  const BiphasicProblem* body() const { return body_; }
+  /// The same as a section problem (null for a three-dimensional model).
+  const SectionProblem* section() const { return section_; }
   const SubdomainDofs& dofs() const { return *dofs_; }
   /// The rigid platens of the whole mesh, posed on the summed system.
   const DistributedPlatens& platens() const { return *platens_; }
-  /// The matrix entries this process contributes (the pattern handed to PETSc, in the order of
-  /// the values given to MatSetValuesCOO).
-  const std::vector<ContributedEntry>& entries() const { return entries_; }
+  /// The matrix entries this process hands PETSc's COO interface: every position of the local
+  /// problem's CSC pattern, in its order (those that do not contribute with row and column −1,
+  /// which PETSc ignores), then the platens' tie entries. The values of a matrix are therefore
+  /// the local CSC value array itself, followed by tail() (no copy, no position map).
+  Index coo_size() const { return local_nnz_ + static_cast<Index>(tail_.size()); }
+  /// The fixed entries after the CSC positions (the owned tie rows' s and −s).
+  const std::vector<ContributedEntry>& tail() const { return tail_; }
   /// On process 0 with linear_solver.ordering = "metis": the unknowns in the nested-dissection
   /// order of the whole mesh (mesh/nested_dissection.hpp), for the direct solver; elsewhere
   /// empty.
@@ -80,22 +94,34 @@ class DistributedAssembly {
  private:
   /// Adds the contributing rows of the local vector local_F_ into F (zeroed first). Collective.
   void add_from_local(Vec F);
+  /// The COO row and column indices (coo_size() of each; made on each call, for PETSc's
+  /// preallocation).
+  void coo_indices(std::vector<PetscInt>& rows, std::vector<PetscInt>& cols) const;
+  /// The constructors' common part: partition, number, extract part `sub`, make its problem
+  /// (make_problem() also makes platens_), and set up the PETSc layout.
+  template <class AnyMesh, class Part, class MakeProblem>
+  void build(const AnyMesh& mesh, std::size_t num_elements, Part& sub, const Config& config,
+             MakeProblem make_problem);
 
   MPI_Comm comm_;
   int rank_ = 0;
   PartitionedNumbering numbering_;
-  Subdomain sub_;
+  Subdomain sub_;                 ///< the part of a tetrahedral mesh
+  SectionSubdomain section_sub_;  ///< or of a section
+  const SubdomainMap* map_ = nullptr;
   std::unique_ptr<DistributedPlatens> platens_;  ///< before problem_, which sees its platens
-  std::unique_ptr<BiphasicProblem> problem_;
+  std::unique_ptr<BiphasicModel> problem_;
+  const BiphasicProblem* body_ = nullptr;
+  const SectionProblem* section_ = nullptr;
   std::unique_ptr<SubdomainDofs> dofs_;
-  std::vector<ContributedEntry> entries_;
+  Index local_nnz_ = 0;                 ///< non-zeros of the local problem's pattern
+  std::vector<ContributedEntry> tail_;  ///< the platens' tie entries
   std::vector<Index> fill_order_;
   VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
   Vec local_ = nullptr;           ///< sequential work vector in the local layout
   std::vector<double> y_, ydot_, F_;
-  std::vector<double> values_;           ///< local CSC values
-  std::vector<double> rate_values_;      ///< local CSC values of dF/dẏ (when asked for)
-  std::vector<PetscScalar> coo_values_;  ///< the contributed entries, in COO order
+  std::vector<double> values_;       ///< local CSC values, then the tail's constants
+  std::vector<double> rate_values_;  ///< local CSC values of dF/dẏ (when asked for), then zeros
 };
 
 }  // namespace biphasic

@@ -33,6 +33,7 @@ namespace biphasic {
 /// One entry of the whole system's matrix that a process contributes: whole-system row and
 /// column, and its value: the part's CSC value at `position`, or, if position < 0, `constant`
 /// in dF/dy + c_j dF/dẏ and 0 in dF/dẏ.
+/// A matrix entry of fixed value that a process adds to the summed matrix.
 struct ContributedEntry {
   Index row, col, position;
   double constant;
@@ -43,11 +44,14 @@ class DistributedPlatens {
   /// The rigid_platen conditions of `config` on the whole mesh `mesh` (the same on every
   /// process); throws as RigidPlatens does. Not yet bound: bind() before use.
   DistributedPlatens(const Mesh& mesh, const Config& config);
+  /// The same on the whole section of a two-dimensional model.
+  DistributedPlatens(const SectionMesh& mesh, bool axisymmetric, const Config& config);
   DistributedPlatens(const DistributedPlatens&) = delete;
   DistributedPlatens& operator=(const DistributedPlatens&) = delete;
 
   bool empty() const { return platens_.empty(); }
-  /// The platens of the whole mesh, unknowns in the one-process layout (u of node n at 3n + c).
+  /// The platens of the whole mesh, unknowns in the one-process layout (u of node n at d·n + c,
+  /// d = 3 or 2 components).
   const RigidPlatens& platens() const { return platens_; }
 
   /// Binds the platens to this process's part: `dofs` and `held` (the Dirichlet flags of the
@@ -62,11 +66,14 @@ class DistributedPlatens {
   const std::vector<char>& tied() const { return tied_; }
   /// s [N/mm].
   double row_scale() const { return row_scale_; }
-  /// The entries this process contributes, from the part's `contributed` ones (SubdomainDofs,
-  /// positions in `pattern`, the part's pattern): tie-row entries moved to the force row, the
-  /// owned tie rows' s and −s appended.
-  std::vector<ContributedEntry> entries(const std::vector<SubdomainDofs::Entry>& contributed,
-                                        const SparsityPattern& pattern) const;
+  /// The row a local row's entries go to in the summed matrix: a tied row's go to its platen's
+  /// force row (the master's unknown in the whole system); −1 for any other row (its own).
+  Index force_row(Index local_row) const {
+    return platens_.empty() ? -1 : master_of_local_[static_cast<std::size_t>(local_row)];
+  }
+  /// The entries the owned tie rows add: (i, i) = s and (i, m) = −s, rows and columns in the
+  /// whole system, `position` −1.
+  std::vector<ContributedEntry> tie_entries() const;
 
   /// The platen rows of the summed residual F [N] (owned layout; F_i on every row before).
   /// Collective.

@@ -68,6 +68,7 @@ class DistributedSystem final : public SemidiscreteSystem {
 
   /// Over the free owned rows of every process.
   std::pair<double, double> field_norms(const double* F) const override;
+  double max_norm(const double* v) const override;
   std::pair<double, double> solution_scales() const override;
   double stiffness_scale() const override;
   double conductance_scale() const override;

@@ -6,10 +6,12 @@
 #include <mpi.h>
 
 #include "biphasic/mesh/mesh.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
 
 namespace biphasic {
 
 /// On `root`, sends `mesh`; elsewhere, replaces `mesh` with the root's. Collective over `comm`.
 void broadcast_mesh(Mesh& mesh, MPI_Comm comm, int root = 0);
+void broadcast_mesh(SectionMesh& mesh, MPI_Comm comm, int root = 0);
 
 }  // namespace biphasic

@@ -31,10 +31,15 @@ Mat petsc_matrix(SUNMatrix M);
 LinearSolverPtr make_superlu_dist_solver(MPI_Comm comm, SUNContext ctx, LinearSolverStats* stats);
 
 /// What the field-split preconditioner needs of this process's owned range: how many of its
-/// unknowns are displacements (they come first, 3 per node) and those nodes' coordinates [mm]
-/// (x, y, z per node, for the rigid-body modes).
+/// unknowns are displacements (they come first, `components` per node) and those nodes'
+/// coordinates [mm] (`components` per node, for the rigid-body modes).
 struct FieldSplitLayout {
   Index owned_u = 0, owned = 0, first_owned = 0;
+  int components = 3;  ///< displacement components per node: the displacement block's block size
+  /// The rigid-body modes (from `coordinates`) as the displacement block's near-null space;
+  /// false (an axisymmetric section, whose rigid motions are axial translations only): the
+  /// multigrid's default, one constant per component.
+  bool rigid_body_modes = true;
   std::vector<double> coordinates;
   /// The Schur coupling term of the matrix being set up (SaddlePointStructure::schur_term),
   /// entries indexed in the pressure block (the owned pressures of process 0, then of process

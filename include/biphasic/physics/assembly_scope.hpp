@@ -16,16 +16,19 @@
 
 #include "biphasic/mesh/mesh.hpp"
 #include "biphasic/mesh/partition.hpp"
+#include "biphasic/mesh/section_mesh.hpp"
+#include "biphasic/physics/section_geometry.hpp"
 
 namespace biphasic {
 
 class RigidPlatens;
 
 struct AssemblyScope {
-  std::vector<char> element_owned;   ///< per tetrahedron: its integrals are assembled here
+  std::vector<char> element_owned;   ///< per element: its integrals are assembled here
   std::vector<char> node_owned;      ///< per node: its face loads are added here
-  double mean_element_length = 0.0;  ///< mean volume diameter over the whole mesh [mm]
-  Point lower{}, upper{};            ///< bounding box of the whole mesh [mm]
+  double mean_element_length = 0.0;  ///< tetrahedra: mean volume diameter over the whole mesh [mm]
+  double section_depth = 0.0;        ///< triangles: section_mean_depth of the whole mesh [mm]
+  Point lower{}, upper{};            ///< bounding box of the whole mesh [mm] (z = 0: triangles)
   std::vector<char> region_used;     ///< per region name: some element of the whole mesh has it
   /// The rigid platens of the whole mesh when the caller poses them on the summed system
   /// (needed only during construction). The part then neither ties nor sums their rows; it takes
@@ -38,6 +41,9 @@ struct AssemblyScope {
 
 /// The scope of part `sub` of `whole` (the mesh `sub.mesh` was extracted from).
 AssemblyScope subdomain_scope(const Mesh& whole, const Subdomain& sub);
+/// The same for a part of a two-dimensional model's section.
+AssemblyScope subdomain_scope(const SectionMesh& whole, const SectionSubdomain& sub,
+                              SectionModel model);
 
 /// Mean volume diameter (6V/π)^(1/3) of the tetrahedra of `mesh` [mm] (0 without any).
 double mean_element_length(const Mesh& mesh);

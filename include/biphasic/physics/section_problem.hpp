@@ -23,6 +23,7 @@
 #include "biphasic/io/config.hpp"
 #include "biphasic/material/material_laws.hpp"
 #include "biphasic/mesh/section_mesh.hpp"
+#include "biphasic/physics/assembly_scope.hpp"
 #include "biphasic/physics/biphasic_model.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/physics/dirichlet_rows.hpp"
@@ -41,15 +42,22 @@ inline SectionModel section_model(ModelKind kind) {
   throw std::invalid_argument("section_model: the three-dimensional model has no section");
 }
 
+/// Mean depth of the measure over the mesh [mm]: Σ measure / Σ area, 1 in plane strain, 2πR̄
+/// axisymmetric (R̄ the area-weighted mean radius). What a momentum row's diagonal scales with.
+double section_mean_depth(const SectionMesh& mesh, SectionModel model);
+
 class SectionProblem final : public BiphasicModel {
  public:
   /// Resolves the boundary conditions by name, builds the geometry and the pattern, and takes
   /// the body force and fluid source formulas of config.loads (of X = (x, y, 0) or (r, z, 0);
   /// body_force.z must be zero). Throws std::runtime_error naming the boundary condition or
-  /// the element on inconsistent input.
-  SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config);
+  /// the element on inconsistent input. With a `scope`, the mesh is one part's view of a
+  /// partitioned mesh and the problem assembles that part's share (physics/assembly_scope.hpp),
+  /// as BiphasicProblem does.
+  SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config,
+                 AssemblyScope scope = {});
   /// The problem keeps a reference to its mesh: a temporary mesh would dangle.
-  SectionProblem(SectionMesh&&, SectionModel, const Config&) = delete;
+  SectionProblem(SectionMesh&&, SectionModel, const Config&, AssemblyScope = {}) = delete;
 
   /// Body force b(X, t) [N/mm³] with X = (x, y, 0): the momentum rows gain −∫Ω₀ f·b dX (its
   /// third component is ignored). `rate` = ∂b/∂t (central differences without it).
@@ -148,6 +156,7 @@ class SectionProblem final : public BiphasicModel {
   double modulus_ = 0.0;
   double volume_rate_dt_ = 0.0;
   std::vector<std::vector<SectionPointGeometry>> geometry_;
+  std::vector<Index> elements_;  ///< the triangles assembled here (all, or a part's own)
   ElementStabilisation stabilisation_;
   RigidPlatens platens_;  ///< before pattern_: the pattern holds their couplings
   SparsityPattern pattern_;

@@ -105,6 +105,10 @@ class SemidiscreteSystem {
   // ---- scales for tolerances and messages ----------------------------------------------------
   /// ‖F‖_∞ over the free momentum rows [N] and over the free mass rows [mm³/s].
   virtual std::pair<double, double> field_norms(const double* F) const = 0;
+  /// ‖v‖_∞ of a vector of size() entries over the whole system: on several processes, where each
+  /// holds its owned entries, the largest over all of them, so that every process takes the
+  /// same decision from it. Collective there.
+  virtual double max_norm(const double* v) const;
   /// Sizes of the solution the data imply [mm], [MPa] (0 where the data say nothing).
   virtual std::pair<double, double> solution_scales() const = 0;
   /// Turns a displacement into a force [N/mm] (oedometric modulus × mean element size).
