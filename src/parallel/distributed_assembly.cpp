@@ -120,9 +120,6 @@ void DistributedAssembly::build(const AnyMesh& mesh, std::size_t num_elements, P
   y_.resize(n);
   ydot_.resize(n);
   F_.resize(n);
-  values_.resize(static_cast<std::size_t>(coo_size()));
-  for (std::size_t k = 0; k < tail_.size(); ++k)
-    values_[static_cast<std::size_t>(local_nnz_) + k] = tail_[k].constant;
 
   std::vector<PetscInt> global(n);
   for (std::size_t i = 0; i < n; ++i) global[i] = petsc_index(dofs_->global(static_cast<Index>(i)));
@@ -225,16 +222,20 @@ void DistributedAssembly::time_derivative(double t, Vec dFdt) {
 void DistributedAssembly::jacobian(double t, Vec y, Vec ydot, double cj, Mat J, Mat rate) {
   to_local(y, y_);
   to_local(ydot, ydot_);
-  // The tail (a platen's tie entries) keeps its constants s and −s, and 0 in dF/dẏ: the local
-  // problem writes the CSC positions only.
-  if (rate) rate_values_.resize(values_.size(), 0.0);
+  // The local values live only while they are handed to PETSc: PETSc's matrix holds them
+  // from then on, and the factorisation that follows needs the memory. The tail (a platen's tie
+  // entries) carries its constants s and −s, and 0 in dF/dẏ; the local problem writes the CSC
+  // positions.
+  std::vector<double> values(static_cast<std::size_t>(coo_size()), 0.0), rates;
+  for (std::size_t k = 0; k < tail_.size(); ++k)
+    values[static_cast<std::size_t>(local_nnz_) + k] = tail_[k].constant;
+  if (rate) rates.assign(values.size(), 0.0);
   run_collectively(comm_, [&] {
-    problem_->jacobian(t, y_.data(), ydot_.data(), cj, values_.data(),
-                       rate ? rate_values_.data() : nullptr);
+    problem_->jacobian(t, y_.data(), ydot_.data(), cj, values.data(),
+                       rate ? rates.data() : nullptr);
   });
-  petsc_check(MatSetValuesCOO(J, values_.data(), INSERT_VALUES), "MatSetValuesCOO");
-  if (rate)
-    petsc_check(MatSetValuesCOO(rate, rate_values_.data(), INSERT_VALUES), "MatSetValuesCOO");
+  petsc_check(MatSetValuesCOO(J, values.data(), INSERT_VALUES), "MatSetValuesCOO");
+  if (rate) petsc_check(MatSetValuesCOO(rate, rates.data(), INSERT_VALUES), "MatSetValuesCOO");
 }
 
 void DistributedAssembly::apply_dirichlet(double t, Vec y, Vec ydot) const {

@@ -62,7 +62,8 @@ class DistributedAssembly {
   /// The matrix entries this process hands PETSc's COO interface: every position of the local
   /// problem's CSC pattern, in its order (those that do not contribute with row and column −1,
   /// which PETSc ignores), then the platens' tie entries. The values of a matrix are therefore
-  /// the local CSC value array itself, followed by tail() (no copy, no position map).
+  /// the local CSC value array itself, followed by tail() (no copy, no position map), and that
+  /// array lives only while a Jacobian is assembled.
   Index coo_size() const { return local_nnz_ + static_cast<Index>(tail_.size()); }
   /// The fixed entries after the CSC positions (the owned tie rows' s and −s).
   const std::vector<ContributedEntry>& tail() const { return tail_; }
@@ -120,8 +121,6 @@ class DistributedAssembly {
   VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
   Vec local_ = nullptr;           ///< sequential work vector in the local layout
   std::vector<double> y_, ydot_, F_;
-  std::vector<double> values_;       ///< local CSC values, then the tail's constants
-  std::vector<double> rate_values_;  ///< local CSC values of dF/dẏ (when asked for), then zeros
 };
 
 }  // namespace biphasic
