@@ -30,21 +30,31 @@ using detail::RefinementTarget;
 using detail::SinglePrecision;
 
 /// This process's owned rows of the Jacobian in coordinate form (1-based global indices, as
-/// MUMPS takes them), read from the PETSc matrix row by row.
+/// MUMPS takes them), read from the PETSc matrix row by row. The values are kept in the
+/// precision about to be factorised only (single-precision factors need no double copy: the
+/// refinement residual reads PETSc's matrix).
 struct OwnedRows {
   PetscInt first = 0, last = 0;  ///< the owned row range [first, last)
   std::vector<MUMPS_INT> irn, jcn;
-  std::vector<double> values;
+  std::vector<double> values;  ///< for double-precision factors (else empty)
+  std::vector<float> single;   ///< for single-precision factors (else empty)
 
-  /// Reads J's values; with `pattern`, its pattern too. Returns false if the pattern differs
-  /// from the one read before (the caller then reads it again and analyses anew).
-  bool read(Mat J, bool pattern) {
+  /// Reads J's values, in single precision if `in_single` (else double); with `pattern`, its
+  /// pattern too. Returns false if the pattern differs from the one read before (the caller
+  /// then reads it again and analyses anew).
+  bool read(Mat J, bool pattern, bool in_single) {
     petsc_check(MatGetOwnershipRange(J, &first, &last), "MatGetOwnershipRange");
     if (pattern) {
       irn.clear();
       jcn.clear();
     }
     values.clear();
+    single.clear();
+    // The other precision's array is released, not just emptied.
+    if (in_single)
+      std::vector<double>().swap(values);
+    else
+      std::vector<float>().swap(single);
     std::size_t k = 0;
     for (PetscInt row = first; row < last; ++row) {
       PetscInt count = 0;
@@ -59,7 +69,10 @@ struct OwnedRows {
         } else if (k >= jcn.size() || jcn[k] != static_cast<MUMPS_INT>(cols[q] + 1)) {
           same = false;
         }
-        values.push_back(vals[q]);
+        if (in_single)
+          single.push_back(static_cast<float>(vals[q]));
+        else
+          values.push_back(vals[q]);
       }
       petsc_check(MatRestoreRow(J, row, &count, &cols, &vals), "MatRestoreRow");
       if (!same) return false;
@@ -121,12 +134,11 @@ class MumpsInstance {
     id_.nnz_loc = static_cast<MUMPS_INT8>(rows.irn.size());
     id_.irn_loc = const_cast<MUMPS_INT*>(rows.irn.data());
     id_.jcn_loc = const_cast<MUMPS_INT*>(rows.jcn.data());
-    if constexpr (std::is_same_v<Real, double>) {
-      id_.a_loc = const_cast<double*>(rows.values.data());  // read in place
-    } else {
-      values_.assign(rows.values.begin(), rows.values.end());
-      id_.a_loc = values_.data();
-    }
+    // Read in place, in this instance's precision.
+    if constexpr (std::is_same_v<Real, double>)
+      id_.a_loc = const_cast<double*>(rows.values.data());
+    else
+      id_.a_loc = const_cast<float*>(rows.single.data());
     if (analyse || !analysed_) {
       if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
@@ -157,7 +169,7 @@ class MumpsInstance {
   typename P::Struc id_{};
   bool host_ = false, analysed_ = false;
   const std::vector<MUMPS_INT>& perm_in_;
-  std::vector<Real> values_, rhs_;  ///< single precision: MUMPS' copy of the values
+  std::vector<Real> rhs_;
 };
 
 /// The solver: owned rows in, right-hand side gathered on process 0, solution scattered (or,
@@ -180,20 +192,23 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
 
   int setup(SUNMatrix A) override {
     Mat J = petsc_matrix(A);
+    matrix_ = J;
     const bool first = !layout_known_;
-    bool same = rows_.read(J, first);
+    const bool in_single = mixed_ && backoff_.single_due();
+    bool same = rows_.read(J, first, in_single);
     int all_same = same ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &all_same, 1, MPI_INT, MPI_MIN, comm_);
-    if (!all_same) rows_.read(J, true);
+    if (!all_same) rows_.read(J, true, in_single);
     const bool analyse = first || !all_same;
     if (analyse) learn_layout(J);
-    if (mixed_ && backoff_.single_due()) {
+    if (in_single) {
       if (!single_) {
         double_.reset();  // one set of factors at a time
         single_ = std::make_unique<MumpsInstance<SinglePrecision>>(comm_, perm_in_);
       }
       if (single_->factorise(rows_, global_nnz_, n_, analyse, stats())) return SUNLS_SUCCESS;
       backoff_.fall_back(stats());
+      rows_.read(J, false, false);  // the same matrix, now in double precision
     }
     return factorise_double(analyse) ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
   }
@@ -230,6 +245,7 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
         break;
     }
     backoff_.fall_back(stats());
+    rows_.read(matrix_, false, false);  // the same matrix, now in double precision
     if (!factorise_double(false)) return SUNLS_PACKAGE_FAIL_UNREC;
     gather(b_, full_);
     if (!double_->solve(full_)) return SUNLS_PACKAGE_FAIL_UNREC;
@@ -268,19 +284,26 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
                  count_[static_cast<std::size_t>(rank_)], MPI_DOUBLE, 0, comm_);
   }
 
-  /// r = b − A x on the owned rows (x_ whole on every process), and how far x_ is from the
-  /// refinement target (the same value on every process).
+  /// r = b − A x on the owned rows (x_ whole on every process; A in double precision, read
+  /// from the PETSc matrix of the last set-up), and how far x_ is from the refinement target
+  /// (the same value on every process).
   double excess() {
     const auto local = b_.size();
     r_.assign(b_.begin(), b_.end());
     scale_.resize(local);
     for (std::size_t i = 0; i < local; ++i) scale_[i] = std::abs(b_[i]);
-    const auto first = static_cast<MUMPS_INT>(rows_.first + 1);
-    for (std::size_t k = 0; k < rows_.values.size(); ++k) {
-      const auto i = static_cast<std::size_t>(rows_.irn[k] - first);
-      const double t = rows_.values[k] * x_[static_cast<std::size_t>(rows_.jcn[k] - 1)];
-      r_[i] -= t;
-      scale_[i] += std::abs(t);
+    for (PetscInt row = rows_.first; row < rows_.last; ++row) {
+      PetscInt count = 0;
+      const PetscInt* cols = nullptr;
+      const PetscScalar* vals = nullptr;
+      petsc_check(MatGetRow(matrix_, row, &count, &cols, &vals), "MatGetRow");
+      const auto i = static_cast<std::size_t>(row - rows_.first);
+      for (PetscInt q = 0; q < count; ++q) {
+        const double t = vals[q] * x_[static_cast<std::size_t>(cols[q])];
+        r_[i] -= t;
+        scale_[i] += std::abs(t);
+      }
+      petsc_check(MatRestoreRow(matrix_, row, &count, &cols, &vals), "MatRestoreRow");
     }
     double m[3] = {0.0, 0.0, 0.0};  // backward error, max |r_i|, max |b_i|
     for (std::size_t i = 0; i < local; ++i) {
@@ -308,6 +331,7 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
   bool layout_known_ = false;
   std::vector<MUMPS_INT> perm_in_;  ///< process 0: position (1-based) of each unknown
   OwnedRows rows_;
+  Mat matrix_ = nullptr;  ///< the matrix of the last set-up (its values stay until the next)
   MUMPS_INT n_ = 0;
   MUMPS_INT8 global_nnz_ = 0;
   std::vector<int> count_, offset_;  ///< per process: owned unknowns, first owned unknown

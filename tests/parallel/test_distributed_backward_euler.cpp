@@ -5,6 +5,7 @@
 // order and PORD), by SuperLU_DIST through PETSc, and by FGMRES with the field-split
 // preconditioner; on tetrahedra and on the sections of both two-dimensional models.
 #include <gtest/gtest.h>
+#include <nvector/nvector_parallel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "../common/box_mesh.hpp"
 #include "../common/every_condition.hpp"
 #include "biphasic/parallel/distributed_system.hpp"
+#include "biphasic/parallel/petsc_linear_solver.hpp"
 #include "biphasic/physics/section_problem.hpp"
 #include "biphasic/time/backward_euler.hpp"
 
@@ -144,6 +146,68 @@ TEST(DistributedBackwardEuler, FieldSplitFgmresMatchesTheOneProcessRun) {
       expect_same_run(four_steps(stabilisation, model), solver, 1e-7);
     }
   }
+}
+
+// The mixed-precision parallel MUMPS falls back to double precision when its single-precision
+// factorisation fails, as one process does (test_direct_solvers.cpp): the pressure rows of the
+// box problem's Jacobian scaled by 1e-50 vanish in single precision, so the first set-up falls
+// back, reading the matrix again in double precision, and the solve is exact to 1e-8.
+TEST(DistributedMumps, FallsBackToDoubleWhenSinglePrecisionFails) {
+  const Mesh mesh = test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2});
+  const Config config = four_steps("gls");
+  DistributedAssembly assembly(mesh, config, PETSC_COMM_WORLD);
+  DistributedSystem system(assembly);
+  SUNContext ctx = nullptr;
+  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
+  {
+    SUNMatrix A = system.new_jacobian_matrix(ctx);
+    const auto n = static_cast<std::size_t>(system.size());
+    std::vector<double> y(n, 0.0), ydot(n, 0.0);
+    system.apply_dirichlet(0.5, y.data(), ydot.data());
+    system.jacobian_into(0.5, y.data(), ydot.data(), 2.0, A);
+    Mat J = petsc_matrix(A);
+    // Rows scaled: 1 for the displacements, 1e-50 for the pressures.
+    Vec scale = assembly.new_vector();
+    PetscScalar* s = nullptr;
+    VecGetArray(scale, &s);
+    for (Index i = 0; i < system.size(); ++i) s[i] = i < system.num_u() ? 1.0 : 1e-50;
+    VecRestoreArray(scale, &s);
+    MatDiagonalScale(J, scale, nullptr);
+    // b = J x for a known x.
+    N_Vector x = system.new_vector(ctx), b = system.new_vector(ctx), exact = system.new_vector(ctx);
+    for (Index i = 0; i < system.size(); ++i)
+      NV_Ith_P(exact, i) = std::sin(1.0 + static_cast<double>(assembly.first_owned() + i));
+    Vec xv = nullptr, bv = nullptr;
+    VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, static_cast<PetscInt>(system.size()),
+                          PETSC_DETERMINE, NV_DATA_P(exact), &xv);
+    VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, static_cast<PetscInt>(system.size()),
+                          PETSC_DETERMINE, NV_DATA_P(b), &bv);
+    MatMult(J, xv, bv);
+
+    LinearSolverStats stats;
+    LinearSolverConfig solver;
+    solver.precision = FactorPrecision::Mixed;
+    LinearSolverPtr ls = system.new_linear_solver(solver, ctx, &stats, nullptr);
+    ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), A), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), A, x, b, 0.0), SUNLS_SUCCESS);
+    EXPECT_EQ(stats.precision_fallbacks, 1);
+    double error = 0.0, largest = 0.0;
+    for (Index i = 0; i < system.size(); ++i) {
+      error = std::max(error, std::abs(NV_Ith_P(x, i) - NV_Ith_P(exact, i)));
+      largest = std::max(largest, std::abs(NV_Ith_P(exact, i)));
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &error, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+    EXPECT_LT(error, 1e-8 * largest);
+    ls.reset();
+    VecDestroy(&xv);
+    VecDestroy(&bv);
+    VecDestroy(&scale);
+    for (N_Vector v : {x, b, exact}) N_VDestroy(v);
+    SUNMatDestroy(A);
+  }
+  SUNContext_Free(&ctx);
 }
 
 }  // namespace
