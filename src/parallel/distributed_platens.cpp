@@ -81,13 +81,13 @@ void DistributedPlatens::bind(const PartitionedNumbering& numbering, const Subdo
   }
 }
 
-std::vector<ContributedEntry> DistributedPlatens::tie_entries() const {
-  std::vector<ContributedEntry> out;
+std::vector<FixedEntry> DistributedPlatens::tie_entries() const {
+  std::vector<FixedEntry> out;
   for (const Part& part : parts_)
     for (Index o : part.ties) {
       const Index i = first_owned_ + o;
-      out.push_back({i, i, -1, row_scale_});
-      out.push_back({i, part.master, -1, -row_scale_});
+      out.push_back({i, i, row_scale_});
+      out.push_back({i, part.master, -row_scale_});
     }
   return out;
 }

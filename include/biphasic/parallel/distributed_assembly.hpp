@@ -66,7 +66,7 @@ class DistributedAssembly {
   /// array lives only while a Jacobian is assembled.
   Index coo_size() const { return local_nnz_ + static_cast<Index>(tail_.size()); }
   /// The fixed entries after the CSC positions (the owned tie rows' s and −s).
-  const std::vector<ContributedEntry>& tail() const { return tail_; }
+  const std::vector<FixedEntry>& tail() const { return tail_; }
   /// On process 0 with linear_solver.ordering = "metis": the unknowns in the nested-dissection
   /// order of the whole mesh (mesh/nested_dissection.hpp), for the direct solver; elsewhere
   /// empty.
@@ -115,8 +115,8 @@ class DistributedAssembly {
   const BiphasicProblem* body_ = nullptr;
   const SectionProblem* section_ = nullptr;
   std::unique_ptr<SubdomainDofs> dofs_;
-  Index local_nnz_ = 0;                 ///< non-zeros of the local problem's pattern
-  std::vector<ContributedEntry> tail_;  ///< the platens' tie entries
+  Index local_nnz_ = 0;           ///< non-zeros of the local problem's pattern
+  std::vector<FixedEntry> tail_;  ///< the platens' tie entries
   std::vector<Index> fill_order_;
   VecScatter scatter_ = nullptr;  ///< owned layout → local unknowns (ghosts included)
   Vec local_ = nullptr;           ///< sequential work vector in the local layout

@@ -30,12 +30,10 @@
 
 namespace biphasic {
 
-/// One entry of the whole system's matrix that a process contributes: whole-system row and
-/// column, and its value: the part's CSC value at `position`, or, if position < 0, `constant`
-/// in dF/dy + c_j dF/dẏ and 0 in dF/dẏ.
-/// A matrix entry of fixed value that a process adds to the summed matrix.
-struct ContributedEntry {
-  Index row, col, position;
+/// A matrix entry of fixed value that a process adds to the summed matrix: whole-system row and
+/// column, its value in dF/dy + c_j dF/dẏ (0 in dF/dẏ).
+struct FixedEntry {
+  Index row, col;
   double constant;
 };
 
@@ -72,8 +70,8 @@ class DistributedPlatens {
     return platens_.empty() ? -1 : master_of_local_[static_cast<std::size_t>(local_row)];
   }
   /// The entries the owned tie rows add: (i, i) = s and (i, m) = −s, rows and columns in the
-  /// whole system, `position` −1.
-  std::vector<ContributedEntry> tie_entries() const;
+  /// whole system.
+  std::vector<FixedEntry> tie_entries() const;
 
   /// The platen rows of the summed residual F [N] (owned layout; F_i on every row before).
   /// Collective.
