@@ -136,8 +136,7 @@ int main(int argc, char** argv) {
     if (args[0] == "check") return run_command({args.begin() + 1, args.end()}, true);
     throw std::invalid_argument("unknown command '" + args[0] + "' (try --help)");
   } catch (const biphasic::CaseError& e) {
-    std::cerr << "error: the case has " << e.problems().size() << " problem(s):\n";
-    for (const auto& p : e.problems()) std::cerr << "  " << p << "\n";
+    std::cerr << "error: " << e.report() << "\n";
     return 1;
   } catch (const biphasic::CheckpointError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -1252,6 +1252,12 @@ CaseError::CaseError(std::vector<std::string> problems)
 
 const std::vector<std::string>& CaseError::problems() const { return problems_; }
 
+std::string CaseError::report() const {
+  std::string text = "the case has " + std::to_string(problems_.size()) + " problem(s):";
+  for (const std::string& p : problems_) text += "\n  " + p;
+  return text;
+}
+
 Config parse_case(const std::string& toml_text, const std::string& source_name,
                   const std::vector<std::string>& overrides, const std::string& base_dir) {
   toml::table root;

@@ -173,9 +173,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     try {
       preflight_notes = planar ? preflight_section(config, section) : preflight(config, mesh);
     } catch (const CaseError& e) {
-      std::string text = "the case has " + std::to_string(e.problems().size()) + " problem(s):";
-      for (const std::string& problem : e.problems()) text += "\n  " + problem;
-      throw std::invalid_argument(text);
+      throw std::invalid_argument(e.report());
     }
     if (resume) {
       const std::string path = (out_dir / kCheckpointName).string();

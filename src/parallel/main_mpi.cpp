@@ -63,10 +63,7 @@ int main(int argc, char** argv) {
   try {
     status = run(std::vector<std::string>(argv + 1, argv + argc), rank);
   } catch (const biphasic::CaseError& e) {
-    std::string text =
-        "error: the case has " + std::to_string(e.problems().size()) + " problem(s):\n";
-    for (const auto& p : e.problems()) text += "  " + p + "\n";
-    report(text, 1);
+    report("error: " + e.report() + "\n", 1);
   } catch (const std::invalid_argument& e) {
     report(std::string("error: ") + e.what() + "\n", 1);
   } catch (const biphasic::CheckpointError& e) {

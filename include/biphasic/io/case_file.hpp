@@ -17,6 +17,9 @@ class CaseError : public std::runtime_error {
   /// what() is the problems joined by '\n'.
   explicit CaseError(std::vector<std::string> problems);
   const std::vector<std::string>& problems() const;
+  /// The report a user reads: "the case has N problem(s):", then each problem on its own line,
+  /// indented by two spaces (no final newline).
+  std::string report() const;
 
  private:
   std::vector<std::string> problems_;
