@@ -179,18 +179,7 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
                      {"jacobian_nonzeros", problem.pattern().nnz()}};
   {
     // The body's bounding box [mm] (z = 0 for a section): what strains are measured against.
-    std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    auto extend = [&](double x, double y, double z) {
-      const double v[3] = {x, y, z};
-      for (std::size_t c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], v[c]);
-        hi[c] = std::max(hi[c], v[c]);
-      }
-    };
-    if (planar)
-      for (const Point2& x : mesh2->nodes) extend(x[0], x[1], 0.0);
-    else
-      for (const auto& x : mesh3->nodes) extend(x[0], x[1], x[2]);
+    const auto [lo, hi] = planar ? bounding_box(*mesh2) : bounding_box(*mesh3);
     summary["mesh"]["bounds"] = {{"min", lo}, {"max", hi}};
   }
   summary["model"] = to_string(config.model);

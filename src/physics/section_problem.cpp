@@ -76,17 +76,6 @@ void accumulate_measure(const std::vector<SectionPointGeometry>& points, bool ax
   }
 }
 
-/// The extent of the mesh along x/r and y/z [mm].
-Eigen::Vector2d mesh_extent(const SectionMesh& mesh) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
-  for (const Point2& x : mesh.nodes)
-    for (int c = 0; c < 2; ++c) {
-      lo(c) = std::min(lo(c), x[c]);
-      hi(c) = std::max(hi(c), x[c]);
-    }
-  return (hi - lo).cwiseMax(1e-300);
-}
-
 }  // namespace
 
 SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, const Config& config,
@@ -285,11 +274,10 @@ SectionProblem::SectionProblem(const SectionMesh& mesh, SectionModel model, cons
         break;
     }
   }
-  // The whole mesh's extent (a part: its bounding box from the scope).
+  // The whole mesh's extent along x/r and y/z [mm] (a part: the whole's box from the scope).
+  const auto [lower, upper] = whole ? bounding_box(mesh) : std::pair{scope.lower, scope.upper};
   const Eigen::Vector2d extent =
-      whole ? mesh_extent(mesh)
-            : Eigen::Vector2d(scope.upper[0] - scope.lower[0], scope.upper[1] - scope.lower[1])
-                  .cwiseMax(1e-300);
+      Eigen::Vector2d(upper[0] - lower[0], upper[1] - lower[1]).cwiseMax(1e-300);
   // Axisymmetric: u_r = 0 on the axis.
   if (axisymmetric) {
     const double tol = 1e-10 * extent.maxCoeff();

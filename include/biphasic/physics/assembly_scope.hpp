@@ -48,7 +48,8 @@ AssemblyScope subdomain_scope(const SectionMesh& whole, const SectionSubdomain& 
 /// Mean volume diameter (6V/π)^(1/3) of the tetrahedra of `mesh` [mm] (0 without any).
 double mean_element_length(const Mesh& mesh);
 
-/// Bounding box of the nodes of `mesh` [mm].
+/// Bounding box of the nodes of `mesh` [mm] (z = 0 for a section).
 std::pair<Point, Point> bounding_box(const Mesh& mesh);
+std::pair<Point, Point> bounding_box(const SectionMesh& mesh);
 
 }  // namespace biphasic
