@@ -274,14 +274,8 @@ void solve_into(const Config& config, const RunOptions& options, const fs::path&
   // The probes read u with three components per node; a section's third is 0.
   const int components = problem.pattern().components();
   auto split = [&](const std::vector<double>& y) {
-    if (components == 3) {
-      u.assign(y.begin(), y.begin() + problem.num_u());
-    } else {
-      u.assign(static_cast<std::size_t>(3 * num_nodes), 0.0);
-      for (Index n = 0; n < num_nodes; ++n)
-        for (int c = 0; c < components; ++c)
-          u[static_cast<std::size_t>(3 * n + c)] = y[static_cast<std::size_t>(components * n + c)];
-    }
+    u.assign(y.begin(), y.begin() + problem.num_u());
+    if (components == 2) u = displacement_in_3d(u);
     p.assign(y.begin() + problem.num_u(), y.end());
   };
   auto write_output = [&](double t, const std::vector<double>& y, const std::vector<double>& ydot) {

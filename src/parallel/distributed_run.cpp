@@ -465,7 +465,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     };
 
     // Gathers an owned state into the one-process layout on process 0, u (d per node) and p
-    // apart, and u with three components per node (a section's third 0) for the probes.
+    // apart, and for a section u with three components per node (the third 0) for the probes.
     auto to_serial = [&](const std::vector<double>& owned, std::vector<double>& u,
                          std::vector<double>& p, std::vector<double>& u3) {
       const std::vector<double> whole = to_whole(owned.data());
@@ -473,14 +473,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       const auto num_u = static_cast<std::ptrdiff_t>(d * num_nodes);
       u.assign(whole.begin(), whole.begin() + num_u);
       p.assign(whole.begin() + num_u, whole.end());
-      if (d == 3) {
-        u3 = u;
-        return;
-      }
-      u3.assign(static_cast<std::size_t>(3 * num_nodes), 0.0);
-      for (Index n = 0; n < num_nodes; ++n)
-        for (Index c = 0; c < d; ++c)
-          u3[static_cast<std::size_t>(3 * n + c)] = u[static_cast<std::size_t>(d * n + c)];
+      if (d == 2) u3 = displacement_in_3d(u);
     };
     // Reactions: each process's share from its own elements, summed on process 0.
     Vec owned_view = nullptr;
@@ -527,7 +520,7 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       }
       run_collectively(comm, [&] {
         if (!root) return;
-        m = probes->write(t, u3, p);
+        m = probes->write(t, d == 3 ? u : u3, p);
         if (fields) fields->write(t, u, p, cells);
         // u: the displacements in the one-process layout, where the platens' unknowns point.
         if (platen_csv) o["platens"] = write_platens(*platen_csv, platens, t, u.data());
