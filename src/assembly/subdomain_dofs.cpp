@@ -6,8 +6,7 @@
 namespace biphasic {
 
 SubdomainDofs::SubdomainDofs(const SubdomainMap& sub, const PartitionedNumbering& numbering,
-                             const SparsityPattern& pattern, const std::vector<char>& constrained)
-    : pattern_(&pattern) {
+                             const SparsityPattern& pattern, const std::vector<char>& constrained) {
   const Index n = pattern.size();
   const Index d = numbering.components;
   if (pattern.components() != d ||
@@ -39,21 +38,6 @@ SubdomainDofs::SubdomainDofs(const SubdomainMap& sub, const PartitionedNumbering
     if (global_[static_cast<std::size_t>(owned_[k])] != first_owned_ + static_cast<Index>(k))
       throw std::logic_error("subdomain unknowns: owned unknown " + std::to_string(k) +
                              " of part " + std::to_string(sub.part) + " out of order");
-}
-
-std::vector<SubdomainDofs::Entry> SubdomainDofs::entries() const {
-  std::vector<Entry> out;
-  const auto& colptr = pattern_->colptr();
-  const auto& rowind = pattern_->rowind();
-  for (Index j = 0; j < size(); ++j) {
-    if (!touched(j)) continue;
-    for (Index k = colptr[static_cast<std::size_t>(j)]; k < colptr[static_cast<std::size_t>(j) + 1];
-         ++k) {
-      const Index i = rowind[static_cast<std::size_t>(k)];
-      if (contributes(i)) out.push_back({global(i), global(j), k});
-    }
-  }
-  return out;
 }
 
 }  // namespace biphasic

@@ -323,11 +323,18 @@ TEST_P(SubdomainAssembly, JacobianSumsToTheWholeMesh) {
     BiphasicModel& local = *problems_[r];
     std::vector<double> lv(static_cast<std::size_t>(local.pattern().nnz())), lr = lv;
     local.jacobian(kTime, part_y_[r].data(), part_ydot_[r].data(), cj, lv.data(), lr.data());
-    for (const SubdomainDofs::Entry& e : dofs_[r].entries()) {
-      auto& s = sum[{e.row, e.col}];
-      s.first += lv[static_cast<std::size_t>(e.position)];
-      s.second += lr[static_cast<std::size_t>(e.position)];
-    }
+    // Every contributed entry (i, j) of the part's pattern, added at its whole-system place.
+    const SubdomainDofs& dofs = dofs_[r];
+    const SparsityPattern& lp = local.pattern();
+    for (Index j = 0; j < lp.size(); ++j)
+      for (Index q = lp.colptr()[static_cast<std::size_t>(j)];
+           q < lp.colptr()[static_cast<std::size_t>(j) + 1]; ++q) {
+        const Index i = lp.rowind()[static_cast<std::size_t>(q)];
+        if (!dofs.contributes(i, j)) continue;
+        auto& s = sum[{dofs.global(i), dofs.global(j)}];
+        s.first += lv[static_cast<std::size_t>(q)];
+        s.second += lr[static_cast<std::size_t>(q)];
+      }
   }
   const double scale = max_abs(values), scale_rate = max_abs(rates);
   std::set<std::pair<Index, Index>> seen;

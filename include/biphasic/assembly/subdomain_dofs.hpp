@@ -13,7 +13,7 @@ namespace biphasic {
 class SubdomainDofs {
  public:
   /// `pattern` and `constrained` are those of the part's problem on the part's mesh (a
-  /// Subdomain's or a SectionSubdomain's); the pattern must outlive this object.
+  /// Subdomain's or a SectionSubdomain's).
   SubdomainDofs(const SubdomainMap& sub, const PartitionedNumbering& numbering,
                 const SparsityPattern& pattern, const std::vector<char>& constrained);
 
@@ -31,24 +31,16 @@ class SubdomainDofs {
   /// has it writes alike), this part owns it.
   bool contributes(Index i) const { return contributes_[static_cast<std::size_t>(i)] != 0; }
 
-  /// One matrix entry the part contributes: whole-system row and column, and the position of
-  /// the entry in the part's CSC value array.
-  struct Entry {
-    Index row, col, position;
-  };
   /// Column j of the part's matrix belongs to a node an owned element touches: the other
   /// columns couple only through ghost elements and stay zero.
   bool touched(Index j) const { return touched_[static_cast<std::size_t>(j)] != 0; }
   /// Entry (i, j) of the part's matrix is added to the whole system's: row i contributes and
   /// column j is touched.
   bool contributes(Index i, Index j) const { return contributes(i) && touched(j); }
-  /// Every contributed entry of the part's pattern, in CSC order (made on each call).
-  std::vector<Entry> entries() const;
 
  private:
   std::vector<Index> global_, owned_;
   std::vector<char> contributes_, touched_;
-  const SparsityPattern* pattern_;
   Index first_owned_ = 0;
 };
 
