@@ -349,11 +349,10 @@ SaddlePointStructure DistributedSystem::saddle_point_structure(
   s.components = num.components;
   s.constrained = constrained_;
   // The local problem's own term, by its local vertex numbers.
-  auto local_term = std::make_shared<std::function<void(std::vector<PressureEntry>&)>>(
-      local.saddle_point_structure(std::move(shifts)).schur_term);
-  s.schur_term = [local_term, block](std::vector<PressureEntry>& out) {
+  s.schur_term = [local_term = local.saddle_point_structure(std::move(shifts)).schur_term,
+                  block](std::vector<PressureEntry>& out) {
     std::vector<PressureEntry> mine;
-    (*local_term)(mine);
+    local_term(mine);
     for (const PressureEntry& e : mine) {
       const Index r = (*block)[static_cast<std::size_t>(e.row)];
       const Index c = (*block)[static_cast<std::size_t>(e.col)];
