@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libsundials-dev libsuitesparse-dev libmetis-dev libeigen3-dev
-  libgmsh-dev libhdf5-dev libtomlplusplus-dev nlohmann-json3-dev
+  libgmsh-dev libhdf5-dev libhdf5-openmpi-dev libtomlplusplus-dev nlohmann-json3-dev
   libumfpack5 libmumps-seq-dev libopenblas0-pthread libhypre-dev libopenmpi-dev
   libpetsc-real-dev libmumps-dev openmpi-bin
   libgtest-dev python3 python3-numpy python3-matplotlib python3-jsonschema python3-gmsh time

@@ -190,7 +190,8 @@ std::string hdf5_cause() {
 /// Helper bound to one open file that turns HDF5 failures into exceptions naming the file.
 class H5File {
  public:
-  H5File(hid_t file, const std::string& path) : file_(file), path_(path) {}
+  H5File(hid_t file, const std::string& path, hid_t transfer = H5P_DEFAULT)
+      : file_(file), path_(path), transfer_(transfer) {}
 
   [[noreturn]] void fail(const std::string& what) const {
     throw std::runtime_error("FieldWriter: " + path_ + ": " + what + hdf5_cause());
@@ -201,9 +202,11 @@ class H5File {
     if (!g.valid()) fail("cannot create group " + name);
   }
 
-  /// Creates and fills a dataset of the given shape; returns it for attaching attributes.
+  /// Creates a dataset of the given shape and fills rows [rows.first, rows.first + rows.count)
+  /// of it from `data` (those rows only, row-major; a scalar dataset is written if rows.count >
+  /// 0); returns it for attaching attributes.
   H5Id write_dataset(const std::string& name, hid_t file_type, hid_t mem_type,
-                     const std::vector<hsize_t>& dims, const void* data) const {
+                     const std::vector<hsize_t>& dims, const void* data, RowRange rows) const {
     H5Id space(dims.empty() ? H5Screate(H5S_SCALAR)
                             : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                H5Sclose);
@@ -212,7 +215,26 @@ class H5File {
                         H5P_DEFAULT),
              H5Dclose);
     if (!set.valid()) fail("cannot create dataset " + name);
-    if (H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+    // The memory holds the selected rows alone, with the dataset's other extents.
+    std::vector<hsize_t> block = dims;
+    if (!block.empty()) block[0] = static_cast<hsize_t>(rows.count);
+    const bool none = rows.count == 0 || (!dims.empty() && dims[0] == 0);
+    if (!block.empty() && none) block[0] = 1;  // a dataspace to select nothing from
+    H5Id memory(block.empty()
+                    ? H5Screate(H5S_SCALAR)
+                    : H5Screate_simple(static_cast<int>(block.size()), block.data(), nullptr),
+                H5Sclose);
+    bool selected = memory.valid();
+    if (selected && none) {
+      selected = H5Sselect_none(memory.get()) >= 0 && H5Sselect_none(space.get()) >= 0;
+    } else if (selected && !dims.empty()) {
+      std::vector<hsize_t> start(dims.size(), 0);
+      start[0] = static_cast<hsize_t>(rows.first);
+      selected = H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                     block.data(), nullptr) >= 0;
+    }
+    if (!selected ||
+        H5Dwrite(set.get(), mem_type, memory.get(), space.get(), transfer_, data) < 0) {
       fail("cannot write dataset " + name);
     }
     return set;
@@ -247,6 +269,7 @@ class H5File {
  private:
   hid_t file_;
   const std::string& path_;
+  hid_t transfer_;  ///< the data transfer list of every H5Dwrite
 };
 
 constexpr const char* kTimes = "/fields/times";
@@ -290,33 +313,38 @@ void check_layout(const FieldLayout& layout) {
   }
 }
 
-/// What the files hold of a mesh: node coordinates as xyz, the cells' nodes, the cell shape.
+/// What the files hold of a mesh, for the rows of some nodes and cells: node coordinates as
+/// xyz (a section's at z = 0) and the cells' nodes. Triangle_6 numbers a triangle's nodes as
+/// Tri6 does (corners, then the midsides of edges 01, 12, 20).
 struct MeshArrays {
   std::vector<double> xyz;
   std::vector<std::int64_t> topology;
-  Index num_cells = 0;
-  int nodes_per_cell = 10;
-  int u_components = 3;
-  const char* topology_type = "Tetrahedron_10";
 
-  explicit MeshArrays(const Mesh& mesh) : num_cells(static_cast<Index>(mesh.tets.size())) {
-    xyz.reserve(3 * mesh.nodes.size());
-    for (const Point& x : mesh.nodes) xyz.insert(xyz.end(), x.begin(), x.end());
-    topology.reserve(10 * mesh.tets.size());
-    for (const Tet10& tet : mesh.tets) topology.insert(topology.end(), tet.begin(), tet.end());
+  static const std::vector<Tet10>& cells_of(const Mesh& mesh) { return mesh.tets; }
+  static const std::vector<Tri6>& cells_of(const SectionMesh& mesh) { return mesh.triangles; }
+  static int nodes_per_cell_of(const Mesh&) { return 10; }
+  static int nodes_per_cell_of(const SectionMesh&) { return 6; }
+  static int u_components_of(const Mesh&) { return 3; }
+  static int u_components_of(const SectionMesh&) { return 2; }
+  static const char* topology_type_of(const Mesh&) { return "Tetrahedron_10"; }
+  static const char* topology_type_of(const SectionMesh&) { return "Triangle_6"; }
+
+  template <class AnyMesh>
+  MeshArrays(const AnyMesh& mesh, RowRange nodes, RowRange cells) {
+    xyz.reserve(3 * static_cast<std::size_t>(nodes.count));
+    for (Index n = nodes.first; n < nodes.first + nodes.count; ++n) {
+      const std::array<double, 3> x = xyz_of(mesh.nodes[static_cast<std::size_t>(n)]);
+      xyz.insert(xyz.end(), x.begin(), x.end());
+    }
+    const auto& all = cells_of(mesh);
+    topology.reserve(static_cast<std::size_t>(nodes_per_cell_of(mesh) * cells.count));
+    for (Index e = cells.first; e < cells.first + cells.count; ++e) {
+      const auto& cell = all[static_cast<std::size_t>(e)];
+      topology.insert(topology.end(), cell.begin(), cell.end());
+    }
   }
-  /// A section at z = 0; Triangle_6 numbers the nodes as Tri6 does (corners, then the
-  /// midsides of edges 01, 12, 20).
-  explicit MeshArrays(const SectionMesh& mesh)
-      : num_cells(static_cast<Index>(mesh.triangles.size())),
-        nodes_per_cell(6),
-        u_components(2),
-        topology_type("Triangle_6") {
-    xyz.reserve(3 * mesh.nodes.size());
-    for (const Point2& x : mesh.nodes) xyz.insert(xyz.end(), {x[0], x[1], 0.0});
-    topology.reserve(6 * mesh.triangles.size());
-    for (const Tri6& tri : mesh.triangles) topology.insert(topology.end(), tri.begin(), tri.end());
-  }
+  static std::array<double, 3> xyz_of(const Point& x) { return x; }
+  static std::array<double, 3> xyz_of(const Point2& x) { return {x[0], x[1], 0.0}; }
 };
 
 }  // namespace
@@ -332,21 +360,52 @@ std::vector<std::string> FieldWriter::groups() const {
   return out;
 }
 
+namespace {
+
+/// Throws std::runtime_error unless `range` lies in [0, total); `what` names the rows.
+void check_rows(const RowRange& range, Index total, const std::string& what) {
+  if (range.first < 0 || range.count < 0 || range.first + range.count > total) {
+    throw std::runtime_error("FieldWriter: this process's " + what + " rows [" +
+                             std::to_string(range.first) + ", " +
+                             std::to_string(range.first + range.count) + ") lie outside the " +
+                             std::to_string(total) + " " + what);
+  }
+}
+
+}  // namespace
+
 template <class AnyMesh>
-void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
-  const std::string& stem = stem_;
-  const MeshArrays arrays(mesh);
+void FieldWriter::take_mesh(const std::string& directory, const AnyMesh& mesh) {
   num_nodes_ = mesh.num_nodes();
   num_vertices_ = mesh.num_vertices;
-  num_cells_ = arrays.num_cells;
-  nodes_per_cell_ = arrays.nodes_per_cell;
-  u_components_ = arrays.u_components;
-  topology_type_ = arrays.topology_type;
+  num_cells_ = static_cast<Index>(MeshArrays::cells_of(mesh).size());
+  nodes_per_cell_ = MeshArrays::nodes_per_cell_of(mesh);
+  u_components_ = MeshArrays::u_components_of(mesh);
+  topology_type_ = MeshArrays::topology_type_of(mesh);
   check_layout(layout_);
   namespace fs = std::filesystem;
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
-  h5_path_ = (dir / (stem + ".h5")).string();
-  xdmf_path_ = (dir / (stem + ".xdmf")).string();
+  h5_path_ = (dir / (stem_ + ".h5")).string();
+  xdmf_path_ = (dir / (stem_ + ".xdmf")).string();
+  if (share_) {
+    rows_ = *share_;
+    check_rows(rows_.nodes, num_nodes_, "nodes");
+    check_rows(rows_.vertices, num_vertices_, "vertices");
+    check_rows(rows_.cells, num_cells_, "cells");
+  } else {
+    rows_ = FieldFileShare{};
+    rows_.nodes = {0, num_nodes_};
+    rows_.vertices = {0, num_vertices_};
+    rows_.cells = {0, num_cells_};
+  }
+}
+
+template <class AnyMesh>
+void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
+  const std::string& stem = stem_;
+  take_mesh(directory, mesh);
+  namespace fs = std::filesystem;
+  const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
   if (stem.empty() || stem.find('/') != std::string::npos) {
     throw std::runtime_error("FieldWriter: invalid file stem '" + stem + "' in " + directory);
   }
@@ -360,7 +419,7 @@ void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
                              ec.message());
   }
   // An index left over from an earlier run would point into the file truncated below.
-  fs::remove(xdmf_path_, ec);
+  if (rows_.writes_index) fs::remove(xdmf_path_, ec);
   if (ec) {
     throw std::runtime_error("FieldWriter: cannot remove stale " + xdmf_path_ + ": " +
                              ec.message());
@@ -368,25 +427,28 @@ void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
 
   // Failures are reported by the exceptions below, with the system's cause.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, rows_.file_access);
   if (file_ < 0) throw std::runtime_error("FieldWriter: cannot create " + h5_path_ + hdf5_cause());
 
   try {
-    const H5File h5(file_, h5_path_);
+    const H5File h5(file_, h5_path_, rows_.transfer);
     h5.create_group("/mesh");
     h5.create_group("/fields");
     for (const std::string& group : groups()) h5.create_group("/fields/" + group);
 
+    const MeshArrays arrays(mesh, rows_.nodes, rows_.cells);
     {
-      H5Id set = h5.write_dataset("/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                                  {static_cast<hsize_t>(num_nodes_), 3}, arrays.xyz.data());
+      H5Id set =
+          h5.write_dataset("/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                           {static_cast<hsize_t>(num_nodes_), 3}, arrays.xyz.data(), rows_.nodes);
       h5.write_attribute(set.get(), "/mesh/coordinates", "units", "mm");
     }
     h5.write_dataset("/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64,
                      {static_cast<hsize_t>(num_cells_), static_cast<hsize_t>(nodes_per_cell_)},
-                     arrays.topology.data());
+                     arrays.topology.data(), rows_.cells);
     const std::int64_t nv = num_vertices_;
-    h5.write_dataset("/mesh/vertex_count", H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &nv);
+    h5.write_dataset("/mesh/vertex_count", H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &nv,
+                     {0, rows_.writes_index ? 1 : 0});
 
     // Output times: 1-D, grows by one per write.
     const hsize_t zero = 0;
@@ -412,27 +474,15 @@ void FieldWriter::create(const std::string& directory, const AnyMesh& mesh) {
 
 template <class AnyMesh>
 void FieldWriter::reopen(const std::string& directory, const AnyMesh& mesh, double keep_until) {
-  const std::string& stem = stem_;
-  const MeshArrays arrays(mesh);
-  num_nodes_ = mesh.num_nodes();
-  num_vertices_ = mesh.num_vertices;
-  num_cells_ = arrays.num_cells;
-  nodes_per_cell_ = arrays.nodes_per_cell;
-  u_components_ = arrays.u_components;
-  topology_type_ = arrays.topology_type;
-  check_layout(layout_);
-  namespace fs = std::filesystem;
-  const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
-  h5_path_ = (dir / (stem + ".h5")).string();
-  xdmf_path_ = (dir / (stem + ".xdmf")).string();
+  take_mesh(directory, mesh);
   edges_ = edge_node_vertices(mesh);
-  if (!fs::is_regular_file(h5_path_))
+  if (!std::filesystem::is_regular_file(h5_path_))
     throw std::runtime_error("FieldWriter: " + h5_path_ + " not found (nothing to continue)");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  file_ = H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, rows_.file_access);
   if (file_ < 0) throw std::runtime_error("FieldWriter: cannot open " + h5_path_ + hdf5_cause());
   try {
-    const H5File h5(file_, h5_path_);
+    const H5File h5(file_, h5_path_, rows_.transfer);
     {
       H5Id coords(H5Dopen2(file_, "/mesh/coordinates", H5P_DEFAULT), H5Dclose);
       H5Id space(coords.valid() ? H5Dget_space(coords.get()) : -1, H5Sclose);
@@ -482,7 +532,7 @@ void FieldWriter::reopen(const std::string& directory, const AnyMesh& mesh, doub
     if (H5Dset_extent(set.get(), &new_size) < 0) h5.fail("cannot shorten " + std::string(kTimes));
     if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
     times_.assign(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(keep));
-    write_xdmf();
+    if (rows_.writes_index) write_xdmf();
   } catch (...) {
     H5Fclose(file_);
     file_ = -1;
@@ -514,6 +564,29 @@ FieldWriter::FieldWriter(const std::string& directory, const std::string& stem,
   reopen(directory, mesh, keep_until);
 }
 
+template <class AnyMesh>
+void FieldWriter::open(const std::string& directory, const AnyMesh& mesh,
+                       std::optional<double> keep_until) {
+  if (keep_until)
+    reopen(directory, mesh, *keep_until);
+  else
+    create(directory, mesh);
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                         FieldLayout layout, const FieldFileShare& share,
+                         std::optional<double> keep_until)
+    : stem_(stem), layout_(std::move(layout)), share_(share) {
+  open(directory, mesh, keep_until);
+}
+
+FieldWriter::FieldWriter(const std::string& directory, const std::string& stem,
+                         const SectionMesh& mesh, FieldLayout layout, const FieldFileShare& share,
+                         std::optional<double> keep_until)
+    : stem_(stem), layout_(std::move(layout)), share_(share) {
+  open(directory, mesh, keep_until);
+}
+
 FieldWriter::~FieldWriter() {
   if (file_ >= 0) H5Fclose(file_);
 }
@@ -521,30 +594,56 @@ FieldWriter::~FieldWriter() {
 void FieldWriter::write(double t, const std::vector<double>& u,
                         const std::vector<double>& p_vertices,
                         const std::vector<std::vector<double>>& cells) {
-  const H5File h5(file_, h5_path_);
+  if (share_) {
+    throw std::logic_error("FieldWriter: " + h5_path_ +
+                           " is written by several processes; write_rows() writes a share");
+  }
+  if (layout_.pressure && p_vertices.size() != static_cast<std::size_t>(num_vertices_)) {
+    H5File(file_, h5_path_)
+        .fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
+              std::to_string(num_vertices_) + " (one per vertex)");
+  }
+  write_rows(t, u, layout_.pressure ? pressure_at_nodes(edges_, p_vertices) : std::vector<double>(),
+             p_vertices, cells);
+}
+
+void FieldWriter::write_rows(double t, const std::vector<double>& u_rows,
+                             const std::vector<double>& p_node_rows,
+                             const std::vector<double>& p_vertex_rows,
+                             const std::vector<std::vector<double>>& cell_rows) {
+  const H5File h5(file_, h5_path_, rows_.transfer);
   const auto nn = static_cast<std::size_t>(num_nodes_);
   const auto nv = static_cast<std::size_t>(num_vertices_);
   const auto ne = static_cast<std::size_t>(num_cells_);
   const auto nu = static_cast<std::size_t>(u_components_);
-  if (layout_.displacement && u.size() != nu * nn) {
-    h5.fail("displacement has " + std::to_string(u.size()) + " entries, expected " +
-            std::to_string(nu) + " x " + std::to_string(nn) +
-            " nodes = " + std::to_string(nu * nn));
+  const auto my_nodes = static_cast<std::size_t>(rows_.nodes.count);
+  const auto my_vertices = static_cast<std::size_t>(rows_.vertices.count);
+  const auto my_cells = static_cast<std::size_t>(rows_.cells.count);
+  // "of this process's" where a share is written, so the counts are not read as the mesh's.
+  const std::string of = share_ ? " of this process's " : " ";
+  if (layout_.displacement && u_rows.size() != nu * my_nodes) {
+    h5.fail("displacement has " + std::to_string(u_rows.size()) + " entries, expected " +
+            std::to_string(nu) + " x " + std::to_string(my_nodes) + of +
+            "nodes = " + std::to_string(nu * my_nodes));
   }
-  if (layout_.pressure && p_vertices.size() != nv) {
-    h5.fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
-            std::to_string(nv) + " (one per vertex)");
+  if (layout_.pressure && p_vertex_rows.size() != my_vertices) {
+    h5.fail("pressure has " + std::to_string(p_vertex_rows.size()) + " entries, expected " +
+            std::to_string(my_vertices) + " (one per vertex" + of + "vertices)");
   }
-  if (cells.size() != layout_.cells.size()) {
-    h5.fail(std::to_string(cells.size()) + " cell fields given, the layout has " +
+  if (layout_.pressure && p_node_rows.size() != my_nodes) {
+    h5.fail("pressure at the nodes has " + std::to_string(p_node_rows.size()) +
+            " entries, expected " + std::to_string(my_nodes) + " (one per node" + of + "nodes)");
+  }
+  if (cell_rows.size() != layout_.cells.size()) {
+    h5.fail(std::to_string(cell_rows.size()) + " cell fields given, the layout has " +
             std::to_string(layout_.cells.size()));
   }
-  for (std::size_t f = 0; f < cells.size(); ++f) {
-    const auto expected = static_cast<std::size_t>(layout_.cells[f].components) * ne;
-    if (cells[f].size() != expected) {
-      h5.fail(layout_.cells[f].name + " has " + std::to_string(cells[f].size()) +
+  for (std::size_t f = 0; f < cell_rows.size(); ++f) {
+    const auto expected = static_cast<std::size_t>(layout_.cells[f].components) * my_cells;
+    if (cell_rows[f].size() != expected) {
+      h5.fail(layout_.cells[f].name + " has " + std::to_string(cell_rows[f].size()) +
               " entries, expected " + std::to_string(layout_.cells[f].components) + " x " +
-              std::to_string(ne) + " cells = " + std::to_string(expected));
+              std::to_string(my_cells) + of + "cells = " + std::to_string(expected));
     }
   }
   if (!std::isfinite(t)) h5.fail("output time is not finite");
@@ -552,30 +651,29 @@ void FieldWriter::write(double t, const std::vector<double>& u,
   const std::string step = std::to_string(times_.size());
 
   const auto put = [&](const std::string& group, std::vector<hsize_t> dims, const double* data,
-                       const std::string& units) {
+                       RowRange rows, const std::string& units) {
     const std::string name = "/fields/" + group + "/" + step;
-    H5Id set = h5.write_dataset(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data);
+    H5Id set = h5.write_dataset(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data, rows);
     h5.write_attribute(set.get(), name, "time", t);
     h5.write_attribute(set.get(), name, "units", units);
   };
   if (layout_.displacement) {
     if (u_components_ == 3) {
-      put("displacement", {nn, 3}, u.data(), "mm");
+      put("displacement", {nn, 3}, u_rows.data(), rows_.nodes, "mm");
     } else {
-      const std::vector<double> u3 = displacement_in_3d(u);
-      put("displacement", {nn, 3}, u3.data(), "mm");
+      const std::vector<double> u3 = displacement_in_3d(u_rows);
+      put("displacement", {nn, 3}, u3.data(), rows_.nodes, "mm");
     }
   }
   if (layout_.pressure) {
-    const std::vector<double> p_nodes = pressure_at_nodes(edges_, p_vertices);
-    put("pressure", {nn}, p_nodes.data(), "MPa");
-    put("pressure_vertices", {nv}, p_vertices.data(), "MPa");
+    put("pressure", {nn}, p_node_rows.data(), rows_.nodes, "MPa");
+    put("pressure_vertices", {nv}, p_vertex_rows.data(), rows_.vertices, "MPa");
   }
-  for (std::size_t f = 0; f < cells.size(); ++f) {
+  for (std::size_t f = 0; f < cell_rows.size(); ++f) {
     const CellFieldSpec& spec = layout_.cells[f];
     std::vector<hsize_t> dims{ne};
     if (spec.components > 1) dims.push_back(static_cast<hsize_t>(spec.components));
-    put(spec.name, dims, cells[f].data(), spec.units);
+    put(spec.name, dims, cell_rows[f].data(), rows_.cells, spec.units);
   }
 
   {
@@ -586,20 +684,24 @@ void FieldWriter::write(double t, const std::vector<double>& u,
     if (!set.valid() || H5Dset_extent(set.get(), &new_size) < 0) {
       h5.fail("cannot extend " + std::string(kTimes));
     }
+    // The index writer appends the time; the others take part in the write with nothing.
     H5Id file_space(H5Dget_space(set.get()), H5Sclose);
     H5Id mem_space(H5Screate_simple(1, &one, nullptr), H5Sclose);
-    if (!file_space.valid() || !mem_space.valid() ||
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &old_size, nullptr, &one, nullptr) <
-            0 ||
-        H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(), H5P_DEFAULT, &t) <
-            0) {
+    const bool selected =
+        file_space.valid() && mem_space.valid() &&
+        (rows_.writes_index
+             ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &old_size, nullptr, &one,
+                                   nullptr) >= 0
+             : H5Sselect_none(file_space.get()) >= 0 && H5Sselect_none(mem_space.get()) >= 0);
+    if (!selected || H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(),
+                              rows_.transfer, &t) < 0) {
       h5.fail("cannot append to " + std::string(kTimes));
     }
   }
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) h5.fail("cannot flush");
 
   times_.push_back(t);
-  write_xdmf();
+  if (rows_.writes_index) write_xdmf();
 }
 
 void FieldWriter::write_xdmf() const {

@@ -28,6 +28,7 @@
 #include "biphasic/io/platen_csv.hpp"
 #include "biphasic/io/reaction_csv.hpp"
 #include "biphasic/parallel/collective_failure.hpp"
+#include "biphasic/parallel/distributed_field_rows.hpp"
 #include "biphasic/parallel/distributed_system.hpp"
 #include "biphasic/parallel/mesh_broadcast.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
@@ -372,21 +373,43 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
         platen_csv = std::make_unique<PlatenCsv>(path, keep.has_value());
         summary["platens"] = platens_description(platens);
       }
-      if (!config.output.fields.empty()) {
-        const FieldLayout layout = field_layout(config.output.fields);
-        const std::string dir = out_dir.string();
-        if (planar)
-          fields = keep ? std::make_unique<FieldWriter>(dir, "fields", section, *keep, layout)
-                        : std::make_unique<FieldWriter>(dir, "fields", section, layout);
-        else
-          fields = keep ? std::make_unique<FieldWriter>(dir, "fields", mesh, *keep, layout)
-                        : std::make_unique<FieldWriter>(dir, "fields", mesh, layout);
-      }
     });
+
+    // One fields.h5, written by all processes together (parallel HDF5): each writes a block of
+    // the rows, and scatters bring its rows' values from the processes that own them.
+    const SubdomainMap& sub = assembly.subdomain();
+    const FieldLayout layout = field_layout(config.output.fields);
+    std::vector<int> owned_tets;  // local indices of the owned elements
+    for (std::size_t e = 0; e < sub.element_owned.size(); ++e)
+      if (sub.element_owned[e]) owned_tets.push_back(static_cast<int>(e));
+    std::unique_ptr<DistributedFieldRows> field_rows;
+    if (!config.output.fields.empty()) {
+      std::string dir = root ? out_dir.string() : std::string();
+      unsigned long length = dir.size();
+      MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG, 0, comm);
+      dir.resize(length);
+      MPI_Bcast(dir.data(), static_cast<int>(length), MPI_CHAR, 0, comm);
+      double keep_until = 0.0;
+      if (root && resume) keep_until = resume->t;
+      MPI_Bcast(&keep_until, 1, MPI_DOUBLE, 0, comm);
+      const std::optional<double> keep =
+          options.restart ? std::optional<double>(keep_until) : std::nullopt;
+      std::vector<Index> owned_cells(owned_tets.size());
+      for (std::size_t k = 0; k < owned_tets.size(); ++k)
+        owned_cells[k] = sub.global_element[static_cast<std::size_t>(owned_tets[k])];
+      run_collectively(comm, [&] {
+        field_rows = std::make_unique<DistributedFieldRows>(
+            comm, numbering, num_vertices,
+            planar ? edge_node_vertices(section) : edge_node_vertices(mesh),
+            static_cast<Index>(num_elements), owned_cells);
+        const FieldFileShare& share = field_rows->share();
+        fields = planar ? std::make_unique<FieldWriter>(dir, "fields", section, layout, share, keep)
+                        : std::make_unique<FieldWriter>(dir, "fields", mesh, layout, share, keep);
+      });
+    }
     const double setup_seconds = seconds_since(setup0);
 
     // The partition, per process.
-    const SubdomainMap& sub = assembly.subdomain();
     double owned_elements = 0.0;
     for (char c : sub.element_owned) owned_elements += c ? 1.0 : 0.0;
     const std::vector<double> elements = gather(owned_elements, comm);
@@ -408,30 +431,9 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       summary["outputs"] = carried.value("outputs", nlohmann::json::array());
     }
 
-    // Cell fields: each process recovers its own elements' values; process 0 places them by
-    // the elements' numbers in the whole mesh.
-    const FieldLayout layout = field_layout(config.output.fields);
-    std::vector<int> owned_tets;  // local indices of the owned tetrahedra
-    for (std::size_t e = 0; e < sub.element_owned.size(); ++e)
-      if (sub.element_owned[e]) owned_tets.push_back(static_cast<int>(e));
-    std::vector<int> tet_counts(static_cast<std::size_t>(size)),
-        tet_displs(static_cast<std::size_t>(size));
-    std::vector<Index> tet_of;  // on process 0: the whole mesh's number of each gathered element
-    if (!layout.cells.empty()) {
-      const int mine = static_cast<int>(owned_tets.size());
-      MPI_Gather(&mine, 1, MPI_INT, tet_counts.data(), 1, MPI_INT, 0, comm);
-      for (std::size_t r = 1; r < tet_counts.size(); ++r)
-        tet_displs[r] = tet_displs[r - 1] + tet_counts[r - 1];
-      std::vector<Index> global(owned_tets.size());
-      for (std::size_t k = 0; k < owned_tets.size(); ++k)
-        global[k] = sub.global_element[static_cast<std::size_t>(owned_tets[k])];
-      tet_of.resize(root ? num_elements : 0);
-      MPI_Gatherv(global.data(), mine, MPI_INT64_T, tet_of.data(), tet_counts.data(),
-                  tet_displs.data(), MPI_INT64_T, 0, comm);
-    }
-    // The selected cell fields of the state (`local`: this process's unknowns, ghosts
-    // included), gathered on process 0 in the whole mesh's element order (elsewhere empty).
-    auto gather_cells = [&](const std::vector<double>& local) {
+    // Cell fields: each process recovers its own elements' values, then its rows of the file
+    // are scattered to it.
+    auto cell_rows = [&](const std::vector<double>& local) {
       std::vector<std::vector<double>> mine;
       run_collectively(comm, [&] {
         CellFields recovered = planar
@@ -439,29 +441,16 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                                    : recover_cell_fields(*assembly.body(), local.data());
         mine = selected_cell_values(config.output.fields, recovered);
       });
-      std::vector<std::vector<double>> whole(mine.size());
+      std::vector<std::vector<double>> rows(mine.size());
       for (std::size_t q = 0; q < mine.size(); ++q) {
         const int width = layout.cells[q].components;
         std::vector<double> owned(owned_tets.size() * static_cast<std::size_t>(width));
         for (std::size_t k = 0; k < owned_tets.size(); ++k)
           std::copy_n(&mine[q][static_cast<std::size_t>(owned_tets[k] * width)], width,
                       &owned[k * static_cast<std::size_t>(width)]);
-        std::vector<int> counts_q(tet_counts.size()), displs_q(tet_displs.size());
-        for (std::size_t r = 0; r < tet_counts.size(); ++r) {
-          counts_q[r] = tet_counts[r] * width;
-          displs_q[r] = tet_displs[r] * width;
-        }
-        std::vector<double> gathered(root ? num_elements * static_cast<std::size_t>(width) : 0);
-        MPI_Gatherv(owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, gathered.data(),
-                    counts_q.data(), displs_q.data(), MPI_DOUBLE, 0, comm);
-        if (!root) continue;
-        whole[q].resize(gathered.size());
-        for (std::size_t k = 0; k < tet_of.size(); ++k)
-          std::copy_n(
-              &gathered[k * static_cast<std::size_t>(width)], width,
-              &whole[q][static_cast<std::size_t>(tet_of[k]) * static_cast<std::size_t>(width)]);
+        rows[q] = field_rows->cell_rows(owned, width);
       }
-      return whole;
+      return rows;
     };
 
     // Gathers an owned state into the one-process layout on process 0, u (d per node) and p
@@ -489,10 +478,16 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
     auto write_output = [&](double t, const std::vector<double>& ys,
                             const std::vector<double>& ydots) {
       to_serial(ys, u, p, u3);
-      std::vector<std::vector<double>> cells;
-      if (!layout.cells.empty()) {
-        local_state(ys, y_local);
-        cells = gather_cells(y_local);
+      if (fields) {
+        std::vector<std::vector<double>> cells;
+        if (!layout.cells.empty()) {
+          local_state(ys, y_local);
+          cells = cell_rows(y_local);
+        }
+        std::vector<double> u_rows, p_node_rows, p_vertex_rows;
+        field_rows->node_rows(ys.data(), u_rows, p_node_rows, p_vertex_rows);
+        run_collectively(comm,
+                         [&] { fields->write_rows(t, u_rows, p_node_rows, p_vertex_rows, cells); });
       }
       nlohmann::json o{{"t", t}};
       std::optional<LineMeasures> m;
@@ -521,7 +516,6 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       run_collectively(comm, [&] {
         if (!root) return;
         m = probes->write(t, d == 3 ? u : u3, p);
-        if (fields) fields->write(t, u, p, cells);
         // u: the displacements in the one-process layout, where the platens' unknowns point.
         if (platen_csv) o["platens"] = write_platens(*platen_csv, platens, t, u.data());
         if (m) o.update(measures_json(*m));  // the entry a one-process run records

@@ -8,8 +8,9 @@ platens.csv's displacements, its forces and the summary's platen record be the s
 the processes and their partition; a case refused on several processes (KLU) must end every
 process with exit status 1 and one message. With --compare-fields EXE, every field of the two
 runs' fields.h5 (displacement, pressure and the cell fields each process recovers for its own
-elements) must agree to 1e-8 of its largest value as well, checked by EXE
-(compare_fields.cpp). With --factorizations-may-differ, the factorisation counts are printed but
+elements, written into one file by all processes) must agree to 1e-8 of its largest value as
+well, checked by EXE (compare_fields.cpp), with the mesh and output times equal and fields.xdmf
+the same text. With --factorizations-may-differ, the factorisation counts are printed but
 not compared: a BDF run's consistent start repeats its correction until the momentum residual is
 below 1e-12 of the force scale, a round-off level where a platen's force row (a sum over its
 face) lands on either side depending on the order of the sums. --parallel-set KEY=VALUE goes to
@@ -94,6 +95,11 @@ def main():
                                      os.path.join(parallel, "fields.h5"), "1e-8"])
             if fields.returncode != 0:
                 failures.append("fields.h5 differs (see above)")
+            # The index names the same datasets at the same times, whoever wrote their rows.
+            with open(os.path.join(serial, "fields.xdmf")) as f1, \
+                    open(os.path.join(parallel, "fields.xdmf")) as f2:
+                if f1.read() != f2.read():
+                    failures.append("fields.xdmf differs from one process's")
         with open(os.path.join(serial, "summary.json")) as f:
             s = json.load(f)
         with open(os.path.join(parallel, "summary.json")) as f:

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,28 @@ struct FieldLayout {
   std::vector<CellFieldSpec> cells;
 };
 
+/// Rows [first, first + count) of a dataset.
+struct RowRange {
+  Index first = 0;
+  Index count = 0;
+};
+
+/// One process's part in a field file that several processes write together through parallel
+/// HDF5: the rows of the node, vertex and cell datasets it writes, and the HDF5 property lists
+/// (hid_t) that make the file's opening and the writes collective (H5Pset_fapl_mpio,
+/// H5Pset_dxpl_mpio). The process with `writes_index` set (exactly one) writes the XDMF index,
+/// the scalar datasets and the output times. Every process constructs its writer with its own
+/// share and calls write_rows() at the same outputs; the ranges of all processes together
+/// cover every row once.
+struct FieldFileShare {
+  std::int64_t file_access = 0;  ///< H5P_FILE_ACCESS list (0 is H5P_DEFAULT)
+  std::int64_t transfer = 0;     ///< H5P_DATASET_XFER list (0 is H5P_DEFAULT)
+  bool writes_index = true;
+  RowRange nodes;
+  RowRange vertices;
+  RowRange cells;
+};
+
 /// Writes the fields of a run to `<directory>/<stem>.h5` and keeps `<directory>/<stem>.xdmf`
 /// (XDMF 3 temporal collection, Tetrahedron_10 cells of a Mesh, Triangle_6 cells of a
 /// SectionMesh) up to date.
@@ -89,6 +112,13 @@ class FieldWriter {
   /// file of another mesh, a tetrahedral one included, is refused).
   FieldWriter(const std::string& directory, const std::string& stem, const SectionMesh& mesh,
               double keep_until, FieldLayout layout = {});
+  /// One process's writer of a file that several write together (`share`); new files, or with
+  /// `keep_until` the continued files of an earlier run (as above). Collective: every process
+  /// sharing the file calls it.
+  FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+              FieldLayout layout, const FieldFileShare& share, std::optional<double> keep_until);
+  FieldWriter(const std::string& directory, const std::string& stem, const SectionMesh& mesh,
+              FieldLayout layout, const FieldFileShare& share, std::optional<double> keep_until);
   ~FieldWriter();
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
@@ -101,6 +131,14 @@ class FieldWriter {
   void write(double t, const std::vector<double>& u, const std::vector<double>& p_vertices,
              const std::vector<std::vector<double>>& cells = {});
 
+  /// write() for a writer constructed with a share: this process's rows only. `u_rows` holds
+  /// the share's nodes (u_components values each, as write()'s u), `p_node_rows` the pressure
+  /// [MPa] at the share's nodes (pressure_at_nodes), `p_vertex_rows` at its vertices, and each
+  /// of `cell_rows` the layout's cell field on the share's cells. Collective.
+  void write_rows(double t, const std::vector<double>& u_rows,
+                  const std::vector<double>& p_node_rows, const std::vector<double>& p_vertex_rows,
+                  const std::vector<std::vector<double>>& cell_rows);
+
   std::size_t num_outputs() const { return times_.size(); }
   const std::vector<double>& times() const { return times_; }  ///< output times [s]
   const std::string& h5_path() const { return h5_path_; }
@@ -112,10 +150,16 @@ class FieldWriter {
   /// The HDF5 groups below /fields that the layout writes into.
   std::vector<std::string> groups() const;
   /// The constructors' work for either kind of mesh (new files, or a restart).
+  /// The counts, paths and edges of `mesh`, and the share's ranges (all rows if no share).
+  template <class AnyMesh>
+  void take_mesh(const std::string& directory, const AnyMesh& mesh);
   template <class AnyMesh>
   void create(const std::string& directory, const AnyMesh& mesh);
   template <class AnyMesh>
   void reopen(const std::string& directory, const AnyMesh& mesh, double keep_until);
+  /// reopen() with `keep_until`, else create().
+  template <class AnyMesh>
+  void open(const std::string& directory, const AnyMesh& mesh, std::optional<double> keep_until);
 
   std::string stem_;
   std::string h5_path_;
@@ -130,6 +174,8 @@ class FieldWriter {
   std::vector<std::array<Index, 2>> edges_;       ///< edge node → vertex pair
   std::vector<double> times_;
   FieldLayout layout_;
+  std::optional<FieldFileShare> share_;  ///< empty: this process writes every row
+  FieldFileShare rows_;                  ///< the rows this process writes
 };
 
 }  // namespace biphasic
