@@ -387,13 +387,11 @@ void FieldWriter::take_mesh(const std::string& directory, const AnyMesh& mesh) {
   const fs::path dir = directory.empty() ? fs::path(".") : fs::path(directory);
   h5_path_ = (dir / (stem_ + ".h5")).string();
   xdmf_path_ = (dir / (stem_ + ".xdmf")).string();
-  if (share_) {
-    rows_ = *share_;
+  if (shared_) {
     check_rows(rows_.nodes, num_nodes_, "nodes");
     check_rows(rows_.vertices, num_vertices_, "vertices");
     check_rows(rows_.cells, num_cells_, "cells");
   } else {
-    rows_ = FieldFileShare{};
     rows_.nodes = {0, num_nodes_};
     rows_.vertices = {0, num_vertices_};
     rows_.cells = {0, num_cells_};
@@ -576,14 +574,14 @@ void FieldWriter::open(const std::string& directory, const AnyMesh& mesh,
 FieldWriter::FieldWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
                          FieldLayout layout, const FieldFileShare& share,
                          std::optional<double> keep_until)
-    : stem_(stem), layout_(std::move(layout)), share_(share) {
+    : stem_(stem), layout_(std::move(layout)), rows_(share), shared_(true) {
   open(directory, mesh, keep_until);
 }
 
 FieldWriter::FieldWriter(const std::string& directory, const std::string& stem,
                          const SectionMesh& mesh, FieldLayout layout, const FieldFileShare& share,
                          std::optional<double> keep_until)
-    : stem_(stem), layout_(std::move(layout)), share_(share) {
+    : stem_(stem), layout_(std::move(layout)), rows_(share), shared_(true) {
   open(directory, mesh, keep_until);
 }
 
@@ -594,16 +592,15 @@ FieldWriter::~FieldWriter() {
 void FieldWriter::write(double t, const std::vector<double>& u,
                         const std::vector<double>& p_vertices,
                         const std::vector<std::vector<double>>& cells) {
-  if (share_) {
+  if (shared_) {
     throw std::logic_error("FieldWriter: " + h5_path_ +
                            " is written by several processes; write_rows() writes a share");
   }
-  if (layout_.pressure && p_vertices.size() != static_cast<std::size_t>(num_vertices_)) {
-    H5File(file_, h5_path_)
-        .fail("pressure has " + std::to_string(p_vertices.size()) + " entries, expected " +
-              std::to_string(num_vertices_) + " (one per vertex)");
-  }
-  write_rows(t, u, layout_.pressure ? pressure_at_nodes(edges_, p_vertices) : std::vector<double>(),
+  // Pressures of the wrong count are refused by write_rows(), before the nodes' are needed.
+  const bool pressure_at_all_nodes =
+      layout_.pressure && p_vertices.size() == static_cast<std::size_t>(num_vertices_);
+  write_rows(t, u,
+             pressure_at_all_nodes ? pressure_at_nodes(edges_, p_vertices) : std::vector<double>(),
              p_vertices, cells);
 }
 
@@ -620,7 +617,7 @@ void FieldWriter::write_rows(double t, const std::vector<double>& u_rows,
   const auto my_vertices = static_cast<std::size_t>(rows_.vertices.count);
   const auto my_cells = static_cast<std::size_t>(rows_.cells.count);
   // "of this process's" where a share is written, so the counts are not read as the mesh's.
-  const std::string of = share_ ? " of this process's " : " ";
+  const std::string of = shared_ ? " of this process's " : " ";
   if (layout_.displacement && u_rows.size() != nu * my_nodes) {
     h5.fail("displacement has " + std::to_string(u_rows.size()) + " entries, expected " +
             std::to_string(nu) + " x " + std::to_string(my_nodes) + of +
@@ -628,7 +625,8 @@ void FieldWriter::write_rows(double t, const std::vector<double>& u_rows,
   }
   if (layout_.pressure && p_vertex_rows.size() != my_vertices) {
     h5.fail("pressure has " + std::to_string(p_vertex_rows.size()) + " entries, expected " +
-            std::to_string(my_vertices) + " (one per vertex" + of + "vertices)");
+            std::to_string(my_vertices) + " (one per vertex" +
+            (shared_ ? " of this process's rows" : "") + ")");
   }
   if (layout_.pressure && p_node_rows.size() != my_nodes) {
     h5.fail("pressure at the nodes has " + std::to_string(p_node_rows.size()) +

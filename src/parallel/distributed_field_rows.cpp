@@ -43,8 +43,8 @@ DistributedFieldRows::DistributedFieldRows(MPI_Comm comm, const PartitionedNumbe
   if (static_cast<Index>(edges.size()) != num_nodes - num_vertices)
     throw std::logic_error("DistributedFieldRows: " + std::to_string(edges.size()) +
                            " edge nodes for " + std::to_string(num_nodes - num_vertices));
-  owned_unknowns_ = numbering.offset[static_cast<std::size_t>(rank) + 1] -
-                    numbering.offset[static_cast<std::size_t>(rank)];
+  const Index owned_unknowns = numbering.offset[static_cast<std::size_t>(rank) + 1] -
+                               numbering.offset[static_cast<std::size_t>(rank)];
   share_.writes_index = rank == 0;
   share_.nodes = block_rows(num_nodes, rank, size);
   share_.vertices = block_rows(num_vertices, rank, size);
@@ -70,7 +70,7 @@ DistributedFieldRows::DistributedFieldRows(MPI_Comm comm, const PartitionedNumbe
   const RowRange& vertices = share_.vertices;
   for (Index v = vertices.first; v < vertices.first + vertices.count; ++v)
     from.push_back(static_cast<PetscInt>(numbering.p_index[static_cast<std::size_t>(v)]));
-  petsc_check(VecCreateMPIWithArray(comm, 1, static_cast<PetscInt>(owned_unknowns_),
+  petsc_check(VecCreateMPIWithArray(comm, 1, static_cast<PetscInt>(owned_unknowns),
                                     static_cast<PetscInt>(numbering.size()), nullptr, &nodes_.from),
               "VecCreateMPIWithArray");
   petsc_check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(from.size()), &nodes_.to),
@@ -79,11 +79,6 @@ DistributedFieldRows::DistributedFieldRows(MPI_Comm comm, const PartitionedNumbe
   petsc_check(VecScatterCreate(nodes_.from, is, nodes_.to, nullptr, &nodes_.scatter),
               "VecScatterCreate");
   ISDestroy(&is);
-
-  // The rank-major numbers of the own cells: this process's follow those of lower ranks.
-  long long mine = static_cast<long long>(owned_cells_.size()), before = 0;
-  MPI_Exscan(&mine, &before, 1, MPI_LONG_LONG, MPI_SUM, comm);
-  cell_offset_ = rank == 0 ? 0 : static_cast<Index>(before);
 
   // MPI-IO for the file, collective transfers.
   share_.file_access = H5Pcreate(H5P_FILE_ACCESS);
@@ -150,9 +145,12 @@ const DistributedFieldRows::Scatter& DistributedFieldRows::cell_scatter(int widt
   petsc_check(VecCreateMPI(comm_, static_cast<PetscInt>(width * share_.cells.count),
                            static_cast<PetscInt>(width * num_cells_), &s.to),
               "VecCreateMPI");
-  // Each own cell goes from its rank-major place to its place in the whole mesh's order.
+  // Each own cell goes from its rank-major place (after those of the lower ranks) to its place
+  // in the whole mesh's order.
+  PetscInt first = 0;
+  petsc_check(VecGetOwnershipRange(s.from, &first, nullptr), "VecGetOwnershipRange");
   std::vector<PetscInt> from(owned_cells_.size()), to(owned_cells_.size());
-  std::iota(from.begin(), from.end(), static_cast<PetscInt>(cell_offset_));
+  std::iota(from.begin(), from.end(), first / width);
   for (std::size_t k = 0; k < owned_cells_.size(); ++k)
     to[k] = static_cast<PetscInt>(owned_cells_[k]);
   IS is_from = index_set(comm_, from, width), is_to = index_set(comm_, to, width);

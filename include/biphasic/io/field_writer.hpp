@@ -150,7 +150,7 @@ class FieldWriter {
   /// The HDF5 groups below /fields that the layout writes into.
   std::vector<std::string> groups() const;
   /// The constructors' work for either kind of mesh (new files, or a restart).
-  /// The counts, paths and edges of `mesh`, and the share's ranges (all rows if no share).
+  /// The counts and paths of `mesh`; the share's ranges checked, or all rows if not shared.
   template <class AnyMesh>
   void take_mesh(const std::string& directory, const AnyMesh& mesh);
   template <class AnyMesh>
@@ -174,8 +174,8 @@ class FieldWriter {
   std::vector<std::array<Index, 2>> edges_;       ///< edge node → vertex pair
   std::vector<double> times_;
   FieldLayout layout_;
-  std::optional<FieldFileShare> share_;  ///< empty: this process writes every row
-  FieldFileShare rows_;                  ///< the rows this process writes
+  FieldFileShare rows_;  ///< the rows this process writes (all of them unless shared_)
+  bool shared_ = false;  ///< several processes write the file, each its share
 };
 
 }  // namespace biphasic

@@ -63,9 +63,7 @@ class DistributedFieldRows {
   MPI_Comm comm_;
   FieldFileShare share_;
   int d_ = 3;
-  Index owned_unknowns_ = 0;
   Index num_cells_ = 0;
-  Index cell_offset_ = 0;  ///< rank-major number of this process's first own cell
   std::vector<Index> owned_cells_;
   std::vector<int> node_sources_;  ///< per node row: 1 (a vertex) or 2 (an edge node) pressures
   Scatter nodes_;                  ///< into [u rows, pressures for the node rows, vertex rows]
