@@ -44,4 +44,12 @@ void run_collectively(MPI_Comm comm, const std::function<void()>& work) {
   throw std::runtime_error(message);
 }
 
+std::string broadcast_string(std::string text, int root, MPI_Comm comm) {
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, root, comm);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, root, comm);
+  return text;
+}
+
 }  // namespace biphasic

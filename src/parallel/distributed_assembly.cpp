@@ -42,13 +42,7 @@ MeshPartition shared_partition(const AnyMesh& mesh, std::size_t num_elements, MP
     }
   }
   MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
-  if (failed) {
-    int length = static_cast<int>(message.size());
-    MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-    message.resize(static_cast<std::size_t>(length));
-    MPI_Bcast(message.data(), length, MPI_CHAR, 0, comm);
-    throw std::runtime_error(message);
-  }
+  if (failed) throw std::runtime_error(broadcast_string(message, 0, comm));
   p.parts = size;
   p.element_part.resize(num_elements);
   MPI_Bcast(p.element_part.data(), static_cast<int>(p.element_part.size()), MPI_INT, 0, comm);

@@ -86,11 +86,7 @@ void run_checking_checkpoint(MPI_Comm comm, const std::function<void()>& work) {
   int speaker = size;
   MPI_Allreduce(&mine, &speaker, 1, MPI_INT, MPI_MIN, comm);
   if (speaker == size) return;
-  int length = static_cast<int>(refusal.size());
-  MPI_Bcast(&length, 1, MPI_INT, speaker, comm);
-  refusal.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(refusal.data(), length, MPI_CHAR, speaker, comm);
-  throw CheckpointError(refusal);
+  throw CheckpointError(broadcast_string(refusal, speaker, comm));
 }
 
 /// Peak resident memory of this process [GB].
@@ -384,16 +380,10 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
       if (sub.element_owned[e]) owned_tets.push_back(static_cast<int>(e));
     std::unique_ptr<DistributedFieldRows> field_rows;
     if (!config.output.fields.empty()) {
-      std::string dir = root ? out_dir.string() : std::string();
-      unsigned long length = dir.size();
-      MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG, 0, comm);
-      dir.resize(length);
-      MPI_Bcast(dir.data(), static_cast<int>(length), MPI_CHAR, 0, comm);
-      double keep_until = 0.0;
-      if (root && resume) keep_until = resume->t;
-      MPI_Bcast(&keep_until, 1, MPI_DOUBLE, 0, comm);
+      const std::string dir = broadcast_string(out_dir.string(), 0, comm);
+      // A restart continues the file from the checkpoint's time (known on every process).
       const std::optional<double> keep =
-          options.restart ? std::optional<double>(keep_until) : std::nullopt;
+          options.restart ? std::optional<double>(t_start) : std::nullopt;
       std::vector<Index> owned_cells(owned_tets.size());
       for (std::size_t k = 0; k < owned_tets.size(); ++k)
         owned_cells[k] = sub.global_element[static_cast<std::size_t>(owned_tets[k])];

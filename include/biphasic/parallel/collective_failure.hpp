@@ -6,6 +6,7 @@
 #include <mpi.h>
 
 #include <functional>
+#include <string>
 
 namespace biphasic {
 
@@ -14,5 +15,9 @@ namespace biphasic {
 /// the integrators), std::invalid_argument if it was one (bad input), else std::runtime_error; the
 /// message is prefixed with "process <rank>: " when the communicator has more than one process.
 void run_collectively(MPI_Comm comm, const std::function<void()>& work);
+
+/// Process `root`'s `text` on every process of `comm` (collective; the others' `text` is
+/// ignored): a failure's message, or a path only process 0 knows.
+std::string broadcast_string(std::string text, int root, MPI_Comm comm);
 
 }  // namespace biphasic
