@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../common/h5_reader.hpp"
+#include "../common/run_binary.hpp"
 #include "biphasic/io/field_writer.hpp"
 #include "cube_mesh.hpp"
 
@@ -26,6 +27,7 @@ namespace biphasic {
 namespace {
 
 namespace fs = std::filesystem;
+using e2e::read_text;
 using test::H5Reader;
 
 constexpr double kEdge = 2.0;  // cube edge length [mm]
@@ -45,13 +47,6 @@ struct TempDir {
   TempDir& operator=(const TempDir&) = delete;
   fs::path path;
 };
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// What an XDMF file says: its time values, and for every DataItem whether the referenced
 /// dataset exists in the HDF5 file (resolved relative to the XDMF folder) with the stated shape.

@@ -9,14 +9,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "../common/box_mesh.hpp"
 #include "../common/every_condition.hpp"
 #include "../common/h5_reader.hpp"
+#include "../common/run_binary.hpp"
 #include "biphasic/parallel/distributed_assembly.hpp"
 #include "biphasic/parallel/distributed_field_rows.hpp"
 
@@ -24,17 +23,11 @@ namespace biphasic {
 namespace {
 
 namespace fs = std::filesystem;
+using e2e::read_text;
 
 /// A value for entry i of output k that no two entries share.
 double state_value(std::size_t i, int k) { return std::sin(0.37 * static_cast<double>(i) + k); }
 double cell_value(Index e, int c, int k) { return 1000.0 * k + static_cast<double>(e) + 0.01 * c; }
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// A temporary folder made by process 0, its name known to all, removed at the end.
 struct SharedTempDir {
