@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -164,6 +165,51 @@ TEST(MeshReadGmsh, ElementNamingAnUndefinedNodeIsAnError) {
     EXPECT_NE(message.find("element 2 names node 4, which no $Nodes section before it defines"),
               std::string::npos)
         << message;
+  }
+}
+
+// gmsh 4.8's 4.x reader crashes on a physical name of a dimension outside 0-3 (a segmentation
+// fault found by fuzzing): the reader must refuse it first, naming the entry, in ASCII and in
+// binary files (whose $PhysicalNames section is text) and in format 2.2 as well.
+TEST(MeshReadGmsh, PhysicalNameOfAnImpossibleDimensionIsAnError) {
+  ScratchDir dir;
+  struct Variant {
+    const char* source;
+    const char* entry;
+    const char* replacement;
+    const char* expected;
+  };
+  const Variant variants[] = {
+      {"two_tet10_v41.msh", "3 2 \"solid\"", "6 2 \"solid\"",
+       "$PhysicalNames entry 2 (6 2 \"solid\") has dimension 6"},
+      {"two_tet10_v41.msh", "2 1 \"base\"", "-1 1 \"base\"",
+       "$PhysicalNames entry 1 (-1 1 \"base\") has dimension -1"},
+      {"two_tet10_v22.msh", "3 2 \"solid\"", "4 2 \"solid\"",
+       "$PhysicalNames entry 2 (4 2 \"solid\") has dimension 4"},
+      {"full_cylinder_tet10_v41_binary.msh", "2 2 \"top\"", "5 2 \"top\"",
+       "$PhysicalNames entry 4 (5 2 \"top\") has dimension 5"},
+  };
+  int k = 0;
+  for (const Variant& v : variants) {
+    std::string text;
+    {
+      std::ifstream in(fixture(v.source), std::ios::binary);
+      text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const auto at = text.find(v.entry);
+    ASSERT_NE(at, std::string::npos) << v.source;
+    text.replace(at, std::string(v.entry).size(), v.replacement);
+    const std::string path = dir.file("physical_dim_" + std::to_string(k++) + ".msh");
+    std::ofstream(path, std::ios::binary) << text;
+    const std::string message = error_of(path);
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(v.expected), std::string::npos) << message;
+    EXPECT_NE(message.find("a physical group has dimension 0, 1, 2 or 3"), std::string::npos)
+        << message;
+  }
+  // The unmodified files are still read.
+  for (const char* name : {"two_tet10_v41.msh", "two_tet10_v22.msh"}) {
+    EXPECT_NO_THROW(biphasic::read_gmsh(fixture(name))) << name;
   }
 }
 
