@@ -65,44 +65,58 @@ class NodeTags {
 using Scan = std::optional<std::set<int>>;
 
 // Format 2.x, ASCII: every $Nodes and $Elements section, read token by token as gmsh reads it
-// (section names matched by prefix, as gmsh matches them).
+// (section names matched by prefix, as gmsh matches them). A section that cannot be read is
+// left where it fails and the scan goes on to the next section, as gmsh's reader goes on: a
+// garbled $Elements section before a sound one must not hide the sound one's defects.
 Scan scan_v2_ascii(std::istream& in) {
   std::set<int> types;
   NodeTags nodes;
   std::string line, coordinate;
-  while (std::getline(in, line)) {
-    if (starts_with(line, "$Nodes")) {
-      nodes.clear();
-      std::uint64_t count = 0;
-      if (!(in >> count)) return std::nullopt;
-      for (std::uint64_t i = 0; i < count; ++i) {
-        std::int64_t tag = 0;
-        if (!(in >> tag >> coordinate >> coordinate >> coordinate)) return std::nullopt;
-        nodes.add(tag);
-      }
-      nodes.seal();
-      std::getline(in, line);
-    } else if (starts_with(line, "$Elements")) {
-      std::uint64_t count = 0;
-      if (!(in >> count)) return std::nullopt;
-      for (std::uint64_t i = 0; i < count; ++i) {
-        std::int64_t tag = 0, ignored = 0;
-        int type = 0, num_tags = 0;
-        if (!(in >> tag >> type >> num_tags) || num_tags < 0) return std::nullopt;
-        for (int k = 0; k < num_tags; ++k) {
-          if (!(in >> ignored)) return std::nullopt;
-        }
-        const int num_nodes = gmsh_nodes_per_element(type);
-        if (num_nodes <= 0) return std::nullopt;
-        for (int k = 0; k < num_nodes; ++k) {
-          std::int64_t node = 0;
-          if (!(in >> node)) return std::nullopt;
-          if (!nodes.contains(node)) throw_missing_node(tag, node);
-        }
-        types.insert(type);
-      }
-      std::getline(in, line);
+  // Reads one section's entries; false where they cannot be read.
+  const auto read_nodes = [&] {
+    nodes.clear();
+    std::uint64_t count = 0;
+    if (!(in >> count)) return false;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      std::int64_t tag = 0;
+      if (!(in >> tag >> coordinate >> coordinate >> coordinate)) return false;
+      nodes.add(tag);
     }
+    return true;
+  };
+  const auto read_elements = [&] {
+    std::uint64_t count = 0;
+    if (!(in >> count)) return false;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      std::int64_t tag = 0, ignored = 0;
+      int type = 0, num_tags = 0;
+      if (!(in >> tag >> type >> num_tags) || num_tags < 0) return false;
+      for (int k = 0; k < num_tags; ++k) {
+        if (!(in >> ignored)) return false;
+      }
+      const int num_nodes = gmsh_nodes_per_element(type);
+      if (num_nodes <= 0) return false;
+      for (int k = 0; k < num_nodes; ++k) {
+        std::int64_t node = 0;
+        if (!(in >> node)) return false;
+        if (!nodes.contains(node)) throw_missing_node(tag, node);
+      }
+      types.insert(type);
+    }
+    return true;
+  };
+  while (std::getline(in, line)) {
+    bool read = true;
+    if (starts_with(line, "$Nodes")) {
+      read = read_nodes();
+      nodes.seal();
+    } else if (starts_with(line, "$Elements")) {
+      read = read_elements();
+    } else {
+      continue;
+    }
+    if (!read) in.clear();  // on to the next section header
+    std::getline(in, line);
   }
   return types;
 }

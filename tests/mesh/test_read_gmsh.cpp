@@ -168,6 +168,21 @@ TEST(MeshReadGmsh, ElementNamingAnUndefinedNodeIsAnError) {
   }
 }
 
+// gmsh's 2.x reader goes on past a section it cannot read; the scan must too, or a garbled
+// $Elements section ahead of the real ones hides an undefined node from it (a segmentation
+// fault found by fuzzing).
+TEST(MeshReadGmsh, UndefinedNodeAfterAGarbledSectionIsAnError) {
+  ScratchDir dir;
+  const std::string path = dir.file("garbled_then_missing_node_v22.msh");
+  std::ofstream(path) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Elements\nnot a count\n"
+                         "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n"
+                         "2 4 2 2 3 1 3 2 4\n$EndElements\n";
+  const std::string message = error_of(path);
+  EXPECT_NE(message.find("element 2 names node 4, which no $Nodes section before it defines"),
+            std::string::npos)
+      << message;
+}
+
 // gmsh 4.8's 4.x reader crashes on a physical name of a dimension outside 0-3 (a segmentation
 // fault found by fuzzing): the reader must refuse it first, naming the entry, in ASCII and in
 // binary files (whose $PhysicalNames section is text) and in format 2.2 as well.
