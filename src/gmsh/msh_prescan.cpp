@@ -61,6 +61,18 @@ class NodeTags {
                            "hand-edited file?)");
 }
 
+// In format 2.2, tags beyond an element's physical and elementary ones place it in mesh
+// partitions; gmsh 4.8 crashes converting partition numbers it does not expect (negative or
+// large ones, found by fuzzing), and a partitioned file is not an input of this program.
+void check_unpartitioned(std::int64_t element, int num_tags) {
+  if (num_tags <= 3) return;
+  throw std::runtime_error("element " + std::to_string(element) + " has " +
+                           std::to_string(num_tags) +
+                           " tags, which place it in mesh partitions: partitioned .msh files are "
+                           "not read; save the mesh whole (under mpirun the program partitions "
+                           "it itself)");
+}
+
 // What a scan learned: the element types met; nullopt = the file is not understood.
 using Scan = std::optional<std::set<int>>;
 
@@ -91,6 +103,7 @@ Scan scan_v2_ascii(std::istream& in) {
       std::int64_t tag = 0, ignored = 0;
       int type = 0, num_tags = 0;
       if (!(in >> tag >> type >> num_tags) || num_tags < 0) return false;
+      check_unpartitioned(tag, num_tags);
       for (int k = 0; k < num_tags; ++k) {
         if (!(in >> ignored)) return false;
       }
@@ -168,6 +181,7 @@ Scan scan_v2_binary(std::istream& in, std::uintmax_t file_size) {
                        static_cast<std::streamsize>(ints_each * sizeof(int)))) {
             return std::nullopt;
           }
+          check_unpartitioned(element[0], num_tags);
           for (std::size_t k = ints_each - static_cast<std::size_t>(num_nodes); k < ints_each; ++k)
             if (!nodes.contains(element[k])) throw_missing_node(element[0], element[k]);
         }

@@ -30,7 +30,9 @@ std::optional<GmshElementType> gmsh_element_type(int type);
 /// - in format 2.x, an element naming a node that no $Nodes section before it defines (gmsh's
 ///   2.x reader reports it and then dereferences the missing node).
 /// - a $PhysicalNames entry of a dimension other than 0-3 (gmsh's 4.x reader crashes on it;
-///   checked in every format).
+///   checked in every format);
+/// - in format 2.x, an element with partition tags (more than three tags): gmsh 4.8 crashes on
+///   partition numbers it does not expect, and partitioned files are not read.
 /// Files it does not understand (other formats, truncated sections, unknown element types) pass
 /// unchanged: gmsh reports those itself.
 void prescan_msh(const std::string& path);

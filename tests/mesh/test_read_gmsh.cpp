@@ -183,6 +183,40 @@ TEST(MeshReadGmsh, UndefinedNodeAfterAGarbledSectionIsAnError) {
       << message;
 }
 
+// gmsh 4.8 crashes converting unexpected partition numbers of a 2.x file (found by fuzzing):
+// elements with partition tags are refused, in ASCII and in binary.
+TEST(MeshReadGmsh, PartitionedFormat2FileIsAnError) {
+  ScratchDir dir;
+  const std::string ascii = dir.file("partitioned_v22.msh");
+  std::ofstream(ascii) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                          "3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
+                          "7 4 4 1 1 1 -3 1 3 2 4\n$EndElements\n";
+  const std::string binary = dir.file("partitioned_v22_binary.msh");
+  {
+    using biphasic::mixed_order_msh::put;
+    std::ofstream out(binary, std::ios::binary);
+    out << "$MeshFormat\n2.2 1 8\n";
+    put<int>(out, 1);
+    out << "\n$EndMeshFormat\n$Nodes\n4\n";
+    for (int tag = 1; tag <= 4; ++tag) {
+      put<int>(out, tag);
+      for (double x : {tag == 2 ? 1.0 : 0.0, tag == 3 ? 1.0 : 0.0, tag == 4 ? 1.0 : 0.0})
+        put(out, x);
+    }
+    out << "\n$EndNodes\n$Elements\n1\n";
+    // type 4, one element, 4 tags; element 7: tags 1 1 1 99999, nodes 1 3 2 4
+    for (int n : {4, 1, 4, 7, 1, 1, 1, 99999, 1, 3, 2, 4}) put(out, n);
+    out << "\n$EndElements\n";
+  }
+  for (const std::string& path : {ascii, binary}) {
+    const std::string message = error_of(path);
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find("element 7 has 4 tags, which place it in mesh partitions"),
+              std::string::npos)
+        << message;
+  }
+}
+
 // gmsh 4.8's 4.x reader crashes on a physical name of a dimension outside 0-3 (a segmentation
 // fault found by fuzzing): the reader must refuse it first, naming the entry, in ASCII and in
 // binary files (whose $PhysicalNames section is text) and in format 2.2 as well.
