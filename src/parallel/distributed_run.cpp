@@ -535,9 +535,14 @@ nlohmann::json run_distributed(const Config& config, const RunOptions& options, 
                              {"krylov_iterations", ls.krylov_iterations},
                              {"max_krylov_iterations", ls.max_krylov_iterations},
                              {"amg_cycles", ls.amg_cycles},
+                             {"symbolic_analyses", ls.analyses},
+                             {"refinement_steps", ls.refinement_steps},
+                             {"precision_fallbacks", ls.precision_fallbacks},
                              {"shift_corrected_solves", ls.shift_corrected_solves},
                              {"shift_correction_iterations", ls.shift_correction_iterations},
                              {"shift_correction_failures", ls.shift_correction_failures}};
+      // The parallel MUMPS' factor entries over nnz(J), as in one process (0: no factors).
+      if (ls.fill > 0.0) summary["counters"]["fill_ratio"] = ls.fill;
       summary["timings"] = {{"wall", wall[0]},
                             {"mesh", mesh_seconds},
                             {"setup", setup_seconds},

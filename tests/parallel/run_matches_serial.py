@@ -117,6 +117,10 @@ def main():
             print(f"{key}: {a_count} on one process, {b_count} on {processes}")
             if key in counted and a_count != b_count:
                 failures.append(f"{key}: {a_count} on one process, {b_count} on {processes}")
+        # The linear solver's counters are reported as in one process.
+        for key in ("symbolic_analyses", "refinement_steps", "precision_fallbacks"):
+            if key not in p["counters"]:
+                failures.append(f"summary counters: no {key} on {processes} processes")
         if p.get("status") != "completed" or p["parallel"]["processes"] != int(processes):
             failures.append("summary: status or process count wrong")
         elements = p["mesh"].get("tetrahedra", p["mesh"].get("triangles"))
