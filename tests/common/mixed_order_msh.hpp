@@ -1,6 +1,7 @@
 // Binary .msh files (4.1 and 2.2) whose one volume holds a 4-node and a 10-node tetrahedron:
 // gmsh keeps one element type per entity and corrupted its heap reading them, so the reader must
-// refuse them first. Shared by the mesh reader's tests and the end-to-end ones.
+// refuse them first; and a writer of small binary 2.2 files for other defects. Shared by the
+// mesh reader's tests and the end-to-end ones.
 #pragma once
 
 #include <array>
@@ -59,20 +60,30 @@ inline void write_mixed_binary_v41(const std::string& path) {
   out << "\n$EndElements\n";
 }
 
-// The content of mixed_orders_v22.msh (a 10-node then a 4-node tet) in binary 2.2.
-inline void write_mixed_binary_v22(const std::string& path) {
+/// A binary 2.2 file: `nodes` tagged 1, 2, ... and an $Elements section of `num_elements`
+/// elements whose blocks are the raw ints `element_ints` (per block: type, count, number of
+/// tags, then per element its tag, tags and nodes).
+inline void write_binary_v22(const std::string& path,
+                             const std::vector<std::array<double, 3>>& nodes, int num_elements,
+                             const std::vector<int>& element_ints) {
   std::ofstream out(path, std::ios::binary);
   out << "$MeshFormat\n2.2 1 8\n";
   put<int>(out, 1);
-  out << "\n$EndMeshFormat\n$Nodes\n11\n";
-  for (int tag = 1; tag <= 11; ++tag) {
-    put<int>(out, tag);
-    for (double x : kMixedNodes[static_cast<std::size_t>(tag - 1)]) put(out, x);
+  out << "\n$EndMeshFormat\n$Nodes\n" << nodes.size() << "\n";
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    put<int>(out, static_cast<int>(i + 1));
+    for (double x : nodes[i]) put(out, x);
   }
-  out << "\n$EndNodes\n$Elements\n2\n";
-  for (int n : {11, 1, 2, 1, 2, 3, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}) put(out, n);  // type 11
-  for (int n : {4, 1, 2, 2, 2, 3, 2, 3, 4, 11}) put(out, n);                     // type 4
+  out << "\n$EndNodes\n$Elements\n" << num_elements << "\n";
+  for (int n : element_ints) put(out, n);
   out << "\n$EndElements\n";
+}
+
+// The content of mixed_orders_v22.msh (a 10-node then a 4-node tet) in binary 2.2.
+inline void write_mixed_binary_v22(const std::string& path) {
+  write_binary_v22(path, kMixedNodes, 2,
+                   {11, 1, 2, 1, 2, 3, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,  // type 11
+                    4,  1, 2, 2, 2, 3, 2, 3, 4, 11});                  // type 4
 }
 
 }  // namespace biphasic::mixed_order_msh

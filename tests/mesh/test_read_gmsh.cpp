@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 using biphasic::Index;
 using biphasic::Mesh;
 using biphasic::Point;
+using biphasic::mixed_order_msh::write_binary_v22;
 using biphasic::mixed_order_msh::write_mixed_binary_v22;
 using biphasic::mixed_order_msh::write_mixed_binary_v41;
 
@@ -145,20 +146,8 @@ TEST(MeshReadGmsh, MixedElementOrdersInBinaryFilesAreAnError) {
 TEST(MeshReadGmsh, ElementNamingAnUndefinedNodeIsAnError) {
   ScratchDir dir;
   const std::string binary = dir.file("missing_node_v22_binary.msh");
-  {
-    using biphasic::mixed_order_msh::put;
-    std::ofstream out(binary, std::ios::binary);
-    out << "$MeshFormat\n2.2 1 8\n";
-    put<int>(out, 1);
-    out << "\n$EndMeshFormat\n$Nodes\n3\n";
-    for (int tag = 1; tag <= 3; ++tag) {
-      put<int>(out, tag);
-      for (double x : {tag == 2 ? 1.0 : 0.0, tag == 3 ? 1.0 : 0.0, 0.0}) put(out, x);
-    }
-    out << "\n$EndNodes\n$Elements\n1\n";
-    for (int n : {4, 1, 2, 2, 3, 1, 3, 2, 4}) put(out, n);  // type 4: tag 2, nodes 1 3 2 4
-    out << "\n$EndElements\n";
-  }
+  // type 4, one element, 2 tags; element 2: nodes 1 3 2 4
+  write_binary_v22(binary, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 1, {4, 1, 2, 2, 3, 1, 3, 2, 4});
   for (const std::string& path : {fixture("missing_node_v22.msh"), binary}) {
     const std::string message = error_of(path);
     EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -192,22 +181,9 @@ TEST(MeshReadGmsh, PartitionedFormat2FileIsAnError) {
                           "3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
                           "7 4 4 1 1 1 -3 1 3 2 4\n$EndElements\n";
   const std::string binary = dir.file("partitioned_v22_binary.msh");
-  {
-    using biphasic::mixed_order_msh::put;
-    std::ofstream out(binary, std::ios::binary);
-    out << "$MeshFormat\n2.2 1 8\n";
-    put<int>(out, 1);
-    out << "\n$EndMeshFormat\n$Nodes\n4\n";
-    for (int tag = 1; tag <= 4; ++tag) {
-      put<int>(out, tag);
-      for (double x : {tag == 2 ? 1.0 : 0.0, tag == 3 ? 1.0 : 0.0, tag == 4 ? 1.0 : 0.0})
-        put(out, x);
-    }
-    out << "\n$EndNodes\n$Elements\n1\n";
-    // type 4, one element, 4 tags; element 7: tags 1 1 1 99999, nodes 1 3 2 4
-    for (int n : {4, 1, 4, 7, 1, 1, 1, 99999, 1, 3, 2, 4}) put(out, n);
-    out << "\n$EndElements\n";
-  }
+  // type 4, one element, 4 tags; element 7: tags 1 1 1 99999, nodes 1 3 2 4
+  write_binary_v22(binary, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, 1,
+                   {4, 1, 4, 7, 1, 1, 1, 99999, 1, 3, 2, 4});
   for (const std::string& path : {ascii, binary}) {
     const std::string message = error_of(path);
     EXPECT_NE(message.find(path), std::string::npos) << message;
