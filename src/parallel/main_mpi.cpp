@@ -16,6 +16,7 @@
 #include "biphasic/io/checkpoint.hpp"
 #include "biphasic/io/output_folder.hpp"
 #include "biphasic/parallel/distributed_run.hpp"
+#include "biphasic/parallel/exit_guard.hpp"
 #include "biphasic/time/progress_meter.hpp"
 #include "biphasic/time/time_integrator.hpp"
 
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 2;
   int rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  biphasic::arm_exit_guard(PETSC_COMM_WORLD);
   int status = 0;
   // Every process reads the case and meets the same errors; process 0 reports them.
   auto report = [&](const std::string& text, int code) {
@@ -73,6 +75,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     report(std::string("error: ") + e.what() + "\n", 2);
   }
+  biphasic::disarm_exit_guard();
   PetscFinalize();
   return status;
 }
