@@ -3,6 +3,7 @@
 #include "biphasic/io/case_file.hpp"
 
 #include <toml++/toml.h>
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -1160,8 +1162,56 @@ void check_platen_solver(const toml::table& root, const Config& config, Problems
     }
 }
 
+/// Out-of-core MUMPS factors need MUMPS and a folder MUMPS can write to; the folder defaults to
+/// $TMPDIR, else /tmp, and is made absolute here (every process of an MPI run checks its own).
+void check_out_of_core(const toml::table& root, const std::string& base_dir,
+                       LinearSolverConfig& solver, Problems& problems) {
+  if (problems.is_bad("linear_solver.out_of_core") ||
+      problems.is_bad("linear_solver.out_of_core_directory"))
+    return;
+  const std::string given = solver.out_of_core_directory;
+  if (!solver.out_of_core) {
+    if (!given.empty())
+      problems.bad_value("linear_solver.out_of_core_directory", quote(given),
+                         "applies only with linear_solver.out_of_core = true");
+    return;
+  }
+  if (!problems.is_bad("linear_solver.type") && solver.type != LinearSolverType::Mumps) {
+    problems.bad_value("linear_solver.out_of_core", "true",
+                       "applies to linear_solver.type = \"mumps\" only, not to " +
+                           shown_at(root, "linear_solver.type", "its default") +
+                           " (MUMPS writes its factors to files)");
+    return;
+  }
+  const char* tmpdir = std::getenv("TMPDIR");
+  const std::string folder = !given.empty()                ? resolve_against(given, base_dir)
+                             : (tmpdir && *tmpdir != '\0') ? std::string(tmpdir)
+                                                           : std::string("/tmp");
+  const std::string shown = !given.empty() ? quote(given)
+                            : tmpdir && *tmpdir != '\0'
+                                ? quote(folder) + " (the default, from $TMPDIR)"
+                                : quote(folder) + " (the default)";
+  std::error_code error;
+  const auto status = std::filesystem::status(folder, error);
+  if (!std::filesystem::exists(status)) {
+    problems.bad_value("linear_solver.out_of_core_directory", shown,
+                       "folder not found (looked for " + folder + ")");
+  } else if (!std::filesystem::is_directory(status)) {
+    problems.bad_value("linear_solver.out_of_core_directory", shown, "is not a folder");
+  } else if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    problems.bad_value("linear_solver.out_of_core_directory", shown,
+                       "is not writable by this user");
+  } else if (folder.size() > 255) {
+    problems.bad_value(
+        "linear_solver.out_of_core_directory", shown,
+        "is " + std::to_string(folder.size()) + " characters long; MUMPS takes at most 255");
+  }
+  solver.out_of_core_directory = folder;
+}
+
 void check_cross_fields(const toml::table& root, const std::string& base_dir, Config& config,
                         Problems& problems) {
+  check_out_of_core(root, base_dir, config.linear_solver, problems);
   check_mesh_source_keys(root, config, problems);
   check_model(root, config, problems);
   check_reaction_boundaries(root, config, problems);

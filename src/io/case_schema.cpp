@@ -712,6 +712,18 @@ std::vector<Key<Config>> build_global_keys() {
       "precision to a componentwise backward error of 1e-6 and a relative residual of 1e-4 "
       "(falling back to `double` if that fails); `double` factorises in double precision.",
       [](auto& c) -> auto& { return c.linear_solver.precision; }));
+  keys.push_back(bool_key<C>(
+      "linear_solver.out_of_core",
+      "MUMPS only: write the factors to files as they are computed and read them back at each "
+      "solve (out-of-core), so that memory holds only the fronts being worked on: about a third "
+      "of the in-memory peak on the paper's mesh 4 (docs/performance.md, *Out-of-core factors*).",
+      [](auto& c) -> auto& { return c.linear_solver.out_of_core; }));
+  keys.push_back(string_key<C>(
+      "linear_solver.out_of_core_directory",
+      "Folder for the out-of-core factors (an existing, writable one; a relative path is "
+      "relative to the case file). Default: $TMPDIR, else /tmp. On a cluster, a disk local to "
+      "the node.",
+      [](auto& c) -> auto& { return c.linear_solver.out_of_core_directory; }));
   keys.push_back(number_key<C>(
       "linear_solver.krylov.rtol", strictly_between(0, 1), "",
       "Iterative solver: relative residual reduction per solve (fields scaled alike).",

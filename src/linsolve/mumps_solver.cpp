@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,7 +42,7 @@ class MumpsInstance {
  public:
   using Real = typename P::Real;
 
-  MumpsInstance(Ordering ordering, const FillOrder& order) {
+  MumpsInstance(Ordering ordering, const FillOrder& order, const std::string& out_of_core) {
     id_.comm_fortran = kUseCommWorld;
     id_.par = 1;  // the host works
     id_.sym = 0;  // unsymmetric
@@ -71,6 +72,7 @@ class MumpsInstance {
       icntl(7) = 1;  // the given order
     }
     icntl(14) = 40;  // working-space relaxation [%]
+    detail::mumps_factors_out_of_core(id_, out_of_core);
   }
   ~MumpsInstance() {
     id_.job = -2;  // release MUMPS' memory
@@ -273,17 +275,18 @@ SolutionError solution_error(SUNMatrix A, const double* b, const double* x, std:
 class MumpsSolver final : public detail::DirectSolver {
  public:
   MumpsSolver(Ordering ordering, FactorPrecision precision, LinearSolverStats* stats,
-              FillOrder order)
+              FillOrder order, std::string out_of_core)
       : DirectSolver(stats),
         ordering_(ordering),
         order_(std::move(order)),
+        out_of_core_(std::move(out_of_core)),
         mixed_(precision == FactorPrecision::Mixed) {}
 
   int setup(SUNMatrix A) override {
     if (mixed_ && backoff_.single_due()) {
       if (!single_) {
         double_.reset();  // one set of factors at a time
-        single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_);
+        single_ = std::make_unique<MumpsInstance<SinglePrecision>>(ordering_, order_, out_of_core_);
       }
       if (single_->factorise(A, stats())) return SUNLS_SUCCESS;
       fall_back_to_double();
@@ -327,7 +330,7 @@ class MumpsSolver final : public detail::DirectSolver {
   bool factorise_double(SUNMatrix A) {
     if (!double_) {
       single_.reset();
-      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_);
+      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(ordering_, order_, out_of_core_);
     }
     backoff_.double_factorised();
     return double_->factorise(A, stats());
@@ -335,6 +338,7 @@ class MumpsSolver final : public detail::DirectSolver {
 
   Ordering ordering_;
   FillOrder order_;
+  std::string out_of_core_;  ///< directory of out-of-core factors; empty: in memory
   bool mixed_;
   PrecisionBackoff backoff_;  ///< mixed: when to factorise in double precision
   std::unique_ptr<MumpsInstance<SinglePrecision>> single_;
@@ -345,9 +349,12 @@ class MumpsSolver final : public detail::DirectSolver {
 }  // namespace
 
 LinearSolverPtr make_mumps_solver(Ordering ordering, FactorPrecision precision, SUNContext ctx,
-                                  LinearSolverStats* stats, FillOrder order) {
+                                  LinearSolverStats* stats, FillOrder order,
+                                  std::string out_of_core_directory) {
   return detail::wrap_direct_solver(
-      std::make_unique<MumpsSolver>(ordering, precision, stats, std::move(order)), ctx);
+      std::make_unique<MumpsSolver>(ordering, precision, stats, std::move(order),
+                                    std::move(out_of_core_directory)),
+      ctx);
 }
 
 }  // namespace biphasic

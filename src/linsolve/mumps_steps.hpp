@@ -6,6 +6,9 @@
 #include <dmumps_c.h>
 #include <smumps_c.h>
 
+#include <cstdio>
+#include <string>
+
 #include "direct_solver.hpp"
 
 namespace biphasic::detail {
@@ -21,6 +24,19 @@ struct SinglePrecision {
   using Real = float;
   static void call(Struc* id) { smumps_c(id); }
 };
+
+/// Out-of-core factors (ICNTL(22) = 1) when `directory` is not empty: MUMPS writes the factors
+/// to files there (named biphasic_mumps*, deleted when the instance ends) as it computes them
+/// and reads them back at each solve, keeping in memory only the fronts it is working on. The
+/// case file checks that the directory exists, is writable, and that its name fits MUMPS' 255
+/// characters. Call before the factorisation.
+template <class Struc>
+void mumps_factors_out_of_core(Struc& id, const std::string& directory) {
+  if (directory.empty()) return;
+  id.icntl[21] = 1;
+  std::snprintf(id.ooc_tmpdir, sizeof id.ooc_tmpdir, "%s", directory.c_str());
+  std::snprintf(id.ooc_prefix, sizeof id.ooc_prefix, "%s", "biphasic_mumps");
+}
 
 /// Analysis (JOB = 1) of `id`, timed and counted in `stats`; false if MUMPS fails.
 template <class Struc, class Call>

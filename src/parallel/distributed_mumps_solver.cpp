@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -90,7 +91,9 @@ class MumpsInstance {
   using Real = typename P::Real;
 
   /// `perm_in` (the solver's) must outlive the instance.
-  MumpsInstance(MPI_Comm comm, const std::vector<MUMPS_INT>& perm_in) : perm_in_(perm_in) {
+  MumpsInstance(MPI_Comm comm, const std::vector<MUMPS_INT>& perm_in,
+                const std::string& out_of_core)
+      : perm_in_(perm_in) {
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     host_ = rank == 0;
@@ -112,6 +115,7 @@ class MumpsInstance {
     icntl(20) = 0;   // dense right-hand side on process 0
     icntl(21) = 0;   // solution on process 0
     icntl(14) = 40;  // working-space relaxation [%]
+    detail::mumps_factors_out_of_core(id_, out_of_core);
     if (!perm_in_.empty()) {
       icntl(7) = 1;  // the caller's order, on process 0
       if (host_) id_.perm_in = const_cast<MUMPS_INT*>(perm_in_.data());
@@ -177,8 +181,11 @@ class MumpsInstance {
 class DistributedMumpsSolver final : public detail::DirectSolver {
  public:
   DistributedMumpsSolver(MPI_Comm comm, FactorPrecision precision, std::vector<Index> order,
-                         LinearSolverStats* stats)
-      : DirectSolver(stats), comm_(comm), mixed_(precision == FactorPrecision::Mixed) {
+                         std::string out_of_core, LinearSolverStats* stats)
+      : DirectSolver(stats),
+        comm_(comm),
+        mixed_(precision == FactorPrecision::Mixed),
+        out_of_core_(std::move(out_of_core)) {
     MPI_Comm_rank(comm, &rank_);
     MPI_Comm_size(comm, &size_);
     if (rank_ == 0 && !order.empty()) {
@@ -204,7 +211,7 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
     if (in_single) {
       if (!single_) {
         double_.reset();  // one set of factors at a time
-        single_ = std::make_unique<MumpsInstance<SinglePrecision>>(comm_, perm_in_);
+        single_ = std::make_unique<MumpsInstance<SinglePrecision>>(comm_, perm_in_, out_of_core_);
       }
       if (single_->factorise(rows_, global_nnz_, n_, analyse, stats())) return SUNLS_SUCCESS;
       backoff_.fall_back(stats());
@@ -318,7 +325,7 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
   bool factorise_double(bool analyse) {
     if (!double_) {
       single_.reset();
-      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(comm_, perm_in_);
+      double_ = std::make_unique<MumpsInstance<DoublePrecision>>(comm_, perm_in_, out_of_core_);
       analyse = true;
     }
     backoff_.double_factorised();
@@ -328,6 +335,7 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;
   bool mixed_;
+  std::string out_of_core_;  ///< directory of out-of-core factors; empty: in memory
   bool layout_known_ = false;
   std::vector<MUMPS_INT> perm_in_;  ///< process 0: position (1-based) of each unknown
   OwnedRows rows_;
@@ -345,9 +353,12 @@ class DistributedMumpsSolver final : public detail::DirectSolver {
 
 LinearSolverPtr make_distributed_mumps_solver(MPI_Comm comm, FactorPrecision precision,
                                               std::vector<Index> order, SUNContext ctx,
-                                              LinearSolverStats* stats) {
+                                              LinearSolverStats* stats,
+                                              std::string out_of_core_directory) {
   return detail::wrap_direct_solver(
-      std::make_unique<DistributedMumpsSolver>(comm, precision, std::move(order), stats), ctx);
+      std::make_unique<DistributedMumpsSolver>(comm, precision, std::move(order),
+                                               std::move(out_of_core_directory), stats),
+      ctx);
 }
 
 }  // namespace biphasic

@@ -2,6 +2,8 @@
 // checks against a mesh.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -365,6 +367,58 @@ line_start = [0, 0, inf]
   EXPECT_TRUE(has_problem(problems, {"output.every = 0: must be >= 1"}));
   EXPECT_TRUE(has_problem(problems, {"output.line_start = [0, 0, inf]", "finite"}));
   EXPECT_EQ(problems.size(), 11u);
+}
+
+// linear_solver.out_of_core: MUMPS only, into an existing writable folder (relative to the
+// case file's folder, by default $TMPDIR, else /tmp), made absolute when the case is read.
+TEST(CaseFile, OutOfCoreFactorsNeedMumpsAndAFolder) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.path() / "scratch");
+  const std::string base = dir.path().string();
+  auto parse = [&](const std::string& extra) {
+    return parse_case(kMinimalCase + "[linear_solver]\n" + extra, "cases/x.toml", {}, base);
+  };
+  Config c = parse("out_of_core = true\nout_of_core_directory = \"scratch\"\n");
+  EXPECT_TRUE(c.linear_solver.out_of_core);
+  EXPECT_EQ(c.linear_solver.out_of_core_directory, (dir.path() / "scratch").string());
+
+  const char* saved = std::getenv("TMPDIR");
+  const std::string saved_value = saved ? saved : "";
+  setenv("TMPDIR", base.c_str(), 1);
+  EXPECT_EQ(parse("out_of_core = true\n").linear_solver.out_of_core_directory, base);
+  setenv("TMPDIR", (base + "/absent").c_str(), 1);
+  const auto from_env = problems_of(kMinimalCase + "[linear_solver]\nout_of_core = true\n");
+  if (saved)
+    setenv("TMPDIR", saved_value.c_str(), 1);
+  else
+    unsetenv("TMPDIR");
+  EXPECT_TRUE(has_problem(from_env, {"linear_solver.out_of_core_directory", "from $TMPDIR",
+                                     "folder not found", "absent"}));
+  EXPECT_FALSE(parse("").linear_solver.out_of_core);
+
+  EXPECT_TRUE(has_problem(
+      problems_of(kMinimalCase + "[linear_solver]\ntype = \"klu\"\nout_of_core = true\n"),
+      {"linear_solver.out_of_core = true", "\"mumps\" only", "\"klu\""}));
+  EXPECT_TRUE(has_problem(
+      problems_of(kMinimalCase + "[linear_solver]\nout_of_core_directory = \"/tmp\"\n"),
+      {"linear_solver.out_of_core_directory = \"/tmp\"", "only with linear_solver.out_of_core"}));
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase + "[linear_solver]\nout_of_core = true\n"
+                                                     "out_of_core_directory = \"/no/such\"\n"),
+                          {"out_of_core_directory = \"/no/such\"", "folder not found"}));
+  const auto file = dir.write("plain.txt", "x");
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase +
+                                      "[linear_solver]\nout_of_core = true\n"
+                                      "out_of_core_directory = \"" +
+                                      file.string() + "\"\n"),
+                          {"out_of_core_directory", "is not a folder"}));
+  const auto deep = dir.path() / std::string(100, 'a') / std::string(100, 'b') /
+                    std::string(100, 'c');  // MUMPS keeps 255 characters of the name
+  std::filesystem::create_directories(deep);
+  EXPECT_TRUE(has_problem(problems_of(kMinimalCase +
+                                      "[linear_solver]\nout_of_core = true\n"
+                                      "out_of_core_directory = \"" +
+                                      deep.string() + "\"\n"),
+                          {"out_of_core_directory", "characters long; MUMPS takes at most 255"}));
 }
 
 TEST(CaseFile, BadChoices) {

@@ -4,11 +4,16 @@
 // whichever solver is chosen.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <string>
 
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "../common/factor_files.hpp"
 #include "biphasic/linsolve/linear_solver.hpp"
 #include "biphasic/physics/biphasic_problem.hpp"
 #include "biphasic/study/paper_scene.hpp"
@@ -174,6 +179,53 @@ TEST(MumpsMixedPrecision, FallsBackToDoubleWhenSinglePrecisionFails) {
   EXPECT_EQ(stats.precision_fallbacks, 2);
   ASSERT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
   EXPECT_LT(sys.max_error(), 1e-8);
+}
+
+// Out-of-core MUMPS (linear_solver.out_of_core): while the solver lives its factors are files in
+// the folder given, and they are gone when it ends; in double precision the solution is the
+// in-memory one to round-off, in mixed precision it meets the same refinement target.
+TEST(MumpsOutOfCore, FactorsAreFilesWhileTheSolverLivesAndSolveAsInMemory) {
+  test::BoxSystem sys("gls", 1.0 / 6.4);
+  const auto n = static_cast<std::size_t>(sys.problem.size());
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("biphasic_ooc_test_" + std::to_string(getpid()));
+  std::filesystem::create_directories(folder);
+  auto factor_files = [&] { return test::mumps_factor_files(folder); };
+  for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed}) {
+    SCOPED_TRACE(to_string(precision));
+    LinearSolverConfig config =
+        SolverChoice{LinearSolverType::Mumps, Ordering::Metis, precision}.config();
+    auto solve = [&](LinearSolverConfig c, bool expect_files) {
+      LinearSolverStats stats;
+      LinearSolverPtr ls = make_linear_solver(c, sys.ctx, &stats);
+      EXPECT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+      EXPECT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_SUCCESS);
+      EXPECT_EQ(factor_files() > 0, expect_files);
+      EXPECT_EQ(SUNLinSolSolve(ls.get(), sys.A, sys.x, sys.b, 0.0), SUNLS_SUCCESS);
+      if (precision == FactorPrecision::Double)
+        EXPECT_LT(sys.max_error(), 1e-8);
+      else  // refined to the mixed precision's target
+        EXPECT_LE(componentwise_backward_error(sys.A, sys.x, sys.b), 1e-6);
+      EXPECT_EQ(stats.precision_fallbacks, 0);
+      const double* x = N_VGetArrayPointer(sys.x);
+      return std::vector<double>(x, x + n);
+    };
+    const std::vector<double> in_memory = solve(config, false);
+    config.out_of_core = true;
+    config.out_of_core_directory = folder.string();
+    const std::vector<double> out_of_core = solve(config, true);
+    EXPECT_EQ(factor_files(), 0);
+    double diff = 0.0, scale = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      diff = std::max(diff, std::abs(out_of_core[i] - in_memory[i]));
+      scale = std::max(scale, std::abs(in_memory[i]));
+    }
+    EXPECT_GT(scale, 0.0);
+    // Double precision: the same factors, rounded in another order. Mixed: each solution
+    // meets the refinement target, which leaves differences of its size.
+    EXPECT_LT(diff, (precision == FactorPrecision::Double ? 1e-12 : 1e-4) * scale);
+  }
+  std::filesystem::remove_all(folder);
 }
 
 // The reference loading (k = 1e-3, GLS, 5 steps) on a coarse quarter cylinder: the pressure

@@ -6,14 +6,18 @@
 // preconditioner; on tetrahedra and on the sections of both two-dimensional models.
 #include <gtest/gtest.h>
 #include <nvector/nvector_parallel.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "../common/box_mesh.hpp"
 #include "../common/every_condition.hpp"
+#include "../common/factor_files.hpp"
 #include "biphasic/parallel/distributed_system.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
 #include "biphasic/physics/section_problem.hpp"
@@ -39,10 +43,10 @@ SectionProblem one_process_problem(const SectionMesh& mesh, const Config& config
   return SectionProblem(mesh, section_model(config.model), config);
 }
 
-/// expect_same_run on `mesh`.
+/// expect_same_run on `mesh`; `each_step` (if any) runs after each step of the distributed run.
 template <class AnyMesh>
 void expect_same_run_on(const AnyMesh& mesh, const Config& config, const LinearSolverConfig& solver,
-                        double tolerance) {
+                        double tolerance, const std::function<void()>& each_step = {}) {
   // One process: UMFPACK (the sequential MUMPS is not part of the MPI build).
   auto whole = one_process_problem(mesh, config);
   LinearSolverConfig serial_solver;
@@ -65,6 +69,7 @@ void expect_same_run_on(const AnyMesh& mesh, const Config& config, const LinearS
   parallel.run(0.0, y,
                [&](const StepInfo& info, const std::vector<double>&, const std::vector<double>&) {
                  iterations.push_back(info.newton_iterations);
+                 if (each_step) each_step();
                });
   EXPECT_EQ(iterations, iterations_serial);
 
@@ -92,11 +97,13 @@ void expect_same_run_on(const AnyMesh& mesh, const Config& config, const LinearS
 /// Four steps on one process (UMFPACK) and on the distributed system with `solver`: the same
 /// Newton iterations and every unknown within `tolerance` of the largest of its field. On the
 /// box of tetrahedra for a three-dimensional `config`, else on section_mesh().
-void expect_same_run(const Config& config, const LinearSolverConfig& solver, double tolerance) {
+void expect_same_run(const Config& config, const LinearSolverConfig& solver, double tolerance,
+                     const std::function<void()>& each_step = {}) {
   if (is_two_dimensional(config.model))
-    expect_same_run_on(section_mesh(), config, solver, tolerance);
+    expect_same_run_on(section_mesh(), config, solver, tolerance, each_step);
   else
-    expect_same_run_on(test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2}), config, solver, tolerance);
+    expect_same_run_on(test::box_mesh({3, 3, 4}, {1.0, 0.8, 1.2}), config, solver, tolerance,
+                       each_step);
 }
 
 Config four_steps(const std::string& stabilisation, ModelKind model = ModelKind::ThreeDimensional) {
@@ -122,6 +129,39 @@ TEST(DistributedBackwardEuler, ParallelMumpsMatchesTheOneProcessRun) {
         expect_same_run(four_steps("gls", model), solver, 1e-8);
       }
     }
+}
+
+// Out-of-core factors (linear_solver.out_of_core): every process keeps its factors in files in
+// the folder given while the run goes on (counted after each step), the run is the in-memory
+// one's to 1e-8, and no file is left when the solver ends.
+TEST(DistributedBackwardEuler, OutOfCoreParallelMumpsMatchesTheOneProcessRun) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  long id = static_cast<long>(getpid());
+  MPI_Bcast(&id, 1, MPI_LONG, 0, PETSC_COMM_WORLD);
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("biphasic_ooc_test_" + std::to_string(id));
+  if (rank == 0) std::filesystem::create_directories(folder);
+  MPI_Barrier(PETSC_COMM_WORLD);
+  auto factor_files = [&] { return test::mumps_factor_files(folder); };
+  for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed}) {
+    SCOPED_TRACE(precision == FactorPrecision::Double ? "double" : "mixed");
+    LinearSolverConfig solver;
+    solver.precision = precision;
+    solver.out_of_core = true;
+    solver.out_of_core_directory = folder.string();
+    int fewest = -1;
+    expect_same_run(four_steps("gls"), solver, 1e-8, [&] {
+      const int now = factor_files();
+      fewest = fewest < 0 ? now : std::min(fewest, now);
+    });
+    EXPECT_GE(fewest, size);  // every process's factors, on this one machine
+    MPI_Barrier(PETSC_COMM_WORLD);
+    EXPECT_EQ(factor_files(), 0);
+  }
+  MPI_Barrier(PETSC_COMM_WORLD);
+  if (rank == 0) std::filesystem::remove_all(folder);
 }
 
 TEST(DistributedBackwardEuler, SuperluDistMatchesTheOneProcessRun) {

@@ -137,9 +137,12 @@ LinearSolverPtr make_umfpack_solver(Ordering ordering, SUNContext ctx, LinearSol
 /// single-precision factors, solutions refined in double precision to a componentwise
 /// backward error ≤ 1e-6 and a relative residual ≤ 1e-4, falling back to double-precision
 /// factors when that fails. Rows with only a diagonal entry (Dirichlet rows) are solved
-/// directly and kept out of the factorisation.
+/// directly and kept out of the factorisation. `out_of_core_directory` not empty: the factors
+/// are written to files there as they are computed and read back at each solve (MUMPS'
+/// out-of-core factorisation), for problems whose factors do not fit in memory.
 LinearSolverPtr make_mumps_solver(Ordering ordering, FactorPrecision precision, SUNContext ctx,
-                                  LinearSolverStats* stats, FillOrder order = {});
+                                  LinearSolverStats* stats, FillOrder order = {},
+                                  std::string out_of_core_directory = {});
 
 /// Right-preconditioned FGMRES (SUNDIALS SPFGMR) on the whole system, solved to
 /// `config.rtol` so that Newton sees an exact solve, with the block upper-triangular

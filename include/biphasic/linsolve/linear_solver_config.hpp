@@ -2,6 +2,8 @@
 // (linear_solver.hpp builds the solver from them; the case-file schema fills them).
 #pragma once
 
+#include <string>
+
 namespace biphasic {
 
 /// Klu, Umfpack, Mumps: sparse direct. Iterative: SUNDIALS FGMRES with a block-triangular
@@ -37,6 +39,11 @@ struct LinearSolverConfig {
   LinearSolverType type = LinearSolverType::Mumps;
   Ordering ordering = Ordering::Metis;
   FactorPrecision precision = FactorPrecision::Mixed;  ///< MUMPS only
+  /// MUMPS only: factors written to files in `out_of_core_directory` as they are computed and
+  /// read back at each solve, so that memory holds only the fronts being worked on.
+  bool out_of_core = false;
+  /// Where the out-of-core factors go; the case file sets it ($TMPDIR, else /tmp, by default).
+  std::string out_of_core_directory;
   KrylovConfig krylov;
 };
 

@@ -25,10 +25,13 @@ namespace biphasic {
 ///   scattered back (centralised, ICNTL(20) = ICNTL(21) = 0);
 /// - `precision` = Mixed: single-precision factors, each solution refined in double precision
 ///   to the one-process solver's targets (componentwise backward error ≤ 1e-6, relative
-///   residual ≤ 1e-4), falling back to double-precision factors on the same schedule.
+///   residual ≤ 1e-4), falling back to double-precision factors on the same schedule;
+/// - `out_of_core_directory` not empty: each process writes its factors to files there
+///   (MUMPS' out-of-core factorisation) and reads them back at each solve.
 /// Vectors are N_Vector_Parallel over the owned range. Collective in every call.
 LinearSolverPtr make_distributed_mumps_solver(MPI_Comm comm, FactorPrecision precision,
                                               std::vector<Index> order, SUNContext ctx,
-                                              LinearSolverStats* stats);
+                                              LinearSolverStats* stats,
+                                              std::string out_of_core_directory = {});
 
 }  // namespace biphasic
