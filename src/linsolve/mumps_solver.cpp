@@ -91,6 +91,9 @@ class MumpsInstance {
     if (analyse) {
       if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
+      if (id_.icntl[21] == 1)
+        detail::require_free_space(id_.ooc_tmpdir,
+                                   detail::factor_file_bytes(id_, sizeof(typename P::Real)));
     }
     for (Coupling& c : coupling_) c.value = a[c.position];
     for (std::size_t k = 0; k < decoupled_.size(); ++k) diagonal_[k] = a[decoupled_diagonal_[k]];
@@ -110,6 +113,7 @@ class MumpsInstance {
     id_.rhs = rhs_.data();
     id_.job = 3;
     P::call(&id_);
+    detail::throw_if_factor_files_failed(id_);
     if (infog(1) < 0) return false;
     std::copy(rhs_.begin(), rhs_.end(), x);
     for (std::size_t k = 0; k < decoupled_.size(); ++k)  // exact, also in single precision

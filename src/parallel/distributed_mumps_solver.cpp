@@ -18,6 +18,7 @@
 #include "../linsolve/direct_solver.hpp"
 #include "../linsolve/mixed_precision.hpp"
 #include "../linsolve/mumps_steps.hpp"
+#include "biphasic/parallel/collective_failure.hpp"
 #include "biphasic/parallel/petsc_check.hpp"
 #include "biphasic/parallel/petsc_linear_solver.hpp"
 
@@ -146,8 +147,22 @@ class MumpsInstance {
     if (analyse || !analysed_) {
       if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
+      if (icntl(22) == 1) require_room_for_factor_files();
     }
     return detail::mumps_factorise(id_, P::call, static_cast<double>(global_nnz), stats);
+  }
+
+  /// Out of core: each node's folder must hold the factor files of the processes it runs (the
+  /// analysis' estimates summed over them); checked everywhere, thrown on every process if short
+  /// on any node. Collective.
+  void require_room_for_factor_files() {
+    MPI_Comm comm = MPI_Comm_f2c(id_.comm_fortran);
+    MPI_Comm node = MPI_COMM_NULL;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    double bytes = detail::factor_file_bytes(id_, sizeof(Real));
+    MPI_Allreduce(MPI_IN_PLACE, &bytes, 1, MPI_DOUBLE, MPI_SUM, node);
+    MPI_Comm_free(&node);
+    run_collectively(comm, [&] { detail::require_free_space(id_.ooc_tmpdir, bytes); });
   }
 
   /// Solves in place: on process 0 `rhs` holds the n right-hand-side entries and receives the
@@ -161,6 +176,7 @@ class MumpsInstance {
     }
     id_.job = 3;
     P::call(&id_);
+    detail::throw_if_factor_files_failed(id_);
     if (infog(1) < 0) return false;
     if (host_) std::copy(rhs_.begin(), rhs_.end(), rhs.begin());
     return true;

@@ -384,14 +384,16 @@ void BackwardEuler::run(double t0, std::vector<double>& y, const StepObserver& o
         break;
       }
     }
-    std::string reason = kinsol_flag_message(flag);
+    // A linear solver that stopped with a cause of its own: that cause, not KINSOL's guess.
+    std::string reason = ls_stats_.last_error.empty()
+                             ? kinsol_flag_message(flag)
+                             : "the linear solver failed: " + ls_stats_.last_error;
     if (stalled_residual > 1.0) {
       std::ostringstream r;
       r << ", with the residual still " << stalled_residual << " times its tolerance";
       reason += r.str();
     }
     if (!m.failure.empty()) reason += ": " + m.failure.message;
-    if (!ls_stats_.last_error.empty()) reason += ": " + ls_stats_.last_error;
     return reason;
   };
 

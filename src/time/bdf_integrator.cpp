@@ -336,9 +336,10 @@ void BdfIntegrator::run(double t0, std::vector<double>& y, const StepObserver& o
     if (flag < 0) {
       double h = 0.0;
       IDAGetCurrentStep(m.ida, &h);
-      std::string cause = ida_flag_message(flag, h);
+      std::string cause = ls_stats_.last_error.empty()
+                              ? ida_flag_message(flag, h)
+                              : "the linear solver failed: " + ls_stats_.last_error;
       if (!m.failure.empty()) cause += ": " + m.failure.message;
-      if (!ls_stats_.last_error.empty()) cause += ": " + ls_stats_.last_error;
       throw failure(tret, h, cause);
     }
     ++steps_since_output;

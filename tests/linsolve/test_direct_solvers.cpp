@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -226,6 +228,76 @@ TEST(MumpsOutOfCore, FactorsAreFilesWhileTheSolverLivesAndSolveAsInMemory) {
     EXPECT_LT(diff, (precision == FactorPrecision::Double ? 1e-12 : 1e-4) * scale);
   }
   std::filesystem::remove_all(folder);
+}
+
+// A factor file MUMPS cannot write (here: its folder is gone, as when a disk fills up) is no
+// singular matrix: the set-up fails unrecoverably with the cause, naming the folder, so that the
+// integrator stops instead of cutting its step back.
+TEST(MumpsOutOfCore, UnwritableFactorFilesStopWithTheCause) {
+  test::BoxSystem sys("gls", 1.0 / 6.4);
+  for (const FactorPrecision precision : {FactorPrecision::Double, FactorPrecision::Mixed}) {
+    SCOPED_TRACE(to_string(precision));
+    LinearSolverConfig config =
+        SolverChoice{LinearSolverType::Mumps, Ordering::Metis, precision}.config();
+    config.out_of_core = true;
+    config.out_of_core_directory = "/nonexistent/biphasic_factor_folder";
+    LinearSolverStats stats;
+    LinearSolverPtr ls = make_linear_solver(config, sys.ctx, &stats);
+    ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+    EXPECT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_PACKAGE_FAIL_UNREC);
+    EXPECT_NE(stats.last_error.find("out-of-core factor files in "
+                                    "/nonexistent/biphasic_factor_folder (INFOG(1) = -90)"),
+              std::string::npos)
+        << stats.last_error;
+  }
+}
+
+// A folder without room for the factor files the analysis estimates stops the set-up before
+// any is written, naming the folder and the sizes (a disk filling up under the parallel MUMPS's
+// asynchronous writer could leave the processes waiting for each other). The full disk is a
+// 1 MiB memory file system filled to the last byte, which needs mount privileges: skipped
+// without them.
+TEST(MumpsOutOfCore, AFolderWithoutRoomStopsBeforeFactorising) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("biphasic_full_disk_" + std::to_string(getpid()));
+  std::filesystem::create_directories(folder);
+  const std::string mount = "mount -t tmpfs -o size=1M tmpfs " + folder.string() + " 2>/dev/null";
+  if (std::system(mount.c_str()) != 0) {
+    std::filesystem::remove(folder);
+    GTEST_SKIP() << "mounting a small file system needs privileges this user lacks";
+  }
+  struct Unmount {  // also when an assertion ends the test early
+    std::filesystem::path folder;
+    ~Unmount() {
+      EXPECT_EQ(std::system(("umount " + folder.string()).c_str()), 0);
+      std::filesystem::remove_all(folder);
+    }
+  } unmount{folder};
+  {
+    std::FILE* fill = std::fopen((folder / "fill").c_str(), "wb");
+    ASSERT_NE(fill, nullptr);
+    const std::vector<char> block(4096, 0);
+    while (std::fwrite(block.data(), 1, block.size(), fill) == block.size()) {
+    }
+    std::fclose(fill);
+  }
+  test::BoxSystem sys("gls", 1.0 / 6.4);
+  LinearSolverConfig config =
+      SolverChoice{LinearSolverType::Mumps, Ordering::Metis, FactorPrecision::Mixed}.config();
+  config.out_of_core = true;
+  config.out_of_core_directory = folder.string();
+  LinearSolverStats stats;
+  {
+    LinearSolverPtr ls = make_linear_solver(config, sys.ctx, &stats);
+    ASSERT_EQ(SUNLinSolInitialize(ls.get()), SUNLS_SUCCESS);
+    EXPECT_EQ(SUNLinSolSetup(ls.get(), sys.A), SUNLS_PACKAGE_FAIL_UNREC);
+  }
+  EXPECT_EQ(stats.factorizations, 0);
+  EXPECT_NE(stats.last_error.find("the factor files need about"), std::string::npos)
+      << stats.last_error;
+  EXPECT_NE(stats.last_error.find("in " + folder.string() + ", which has 0 GB free"),
+            std::string::npos)
+      << stats.last_error;
 }
 
 // The reference loading (k = 1e-3, GLS, 5 steps) on a coarse quarter cylinder: the pressure
