@@ -1184,13 +1184,13 @@ void check_out_of_core(const toml::table& root, const std::string& base_dir,
     return;
   }
   const char* tmpdir = std::getenv("TMPDIR");
-  const std::string folder = !given.empty()                ? resolve_against(given, base_dir)
-                             : (tmpdir && *tmpdir != '\0') ? std::string(tmpdir)
-                                                           : std::string("/tmp");
+  const bool from_env = given.empty() && tmpdir && *tmpdir != '\0';
+  const std::string folder = !given.empty() ? resolve_against(given, base_dir)
+                             : from_env     ? std::string(tmpdir)
+                                            : std::string("/tmp");
   const std::string shown = !given.empty() ? quote(given)
-                            : tmpdir && *tmpdir != '\0'
-                                ? quote(folder) + " (the default, from $TMPDIR)"
-                                : quote(folder) + " (the default)";
+                            : from_env     ? quote(folder) + " (the default, from $TMPDIR)"
+                                           : quote(folder) + " (the default)";
   std::error_code error;
   const auto status = std::filesystem::status(folder, error);
   if (!std::filesystem::exists(status)) {

@@ -27,7 +27,7 @@ LinearSolverPtr make_linear_solver(const LinearSolverConfig& config, SUNContext 
       return make_umfpack_solver(config.ordering, ctx, stats, std::move(order));
     case LinearSolverType::Mumps:
       return make_mumps_solver(config.ordering, config.precision, ctx, stats, std::move(order),
-                               config.out_of_core ? config.out_of_core_directory : "");
+                               config.factor_folder());
     case LinearSolverType::Iterative:
       if (!saddle)
         throw std::invalid_argument("the iterative linear solver needs the saddle-point structure");

@@ -91,7 +91,7 @@ class MumpsInstance {
     if (analyse) {
       if (!detail::mumps_analyse(id_, P::call, stats)) return false;
       analysed_ = true;
-      if (id_.icntl[21] == 1)
+      if (icntl(22) == 1)  // out of core
         detail::require_free_space(id_.ooc_tmpdir,
                                    detail::factor_file_bytes(id_, sizeof(typename P::Real)));
     }

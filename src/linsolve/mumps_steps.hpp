@@ -27,6 +27,10 @@ struct SinglePrecision {
   static void call(Struc* id) { smumps_c(id); }
 };
 
+/// A count MUMPS reports in an INFO/INFOG entry: the value itself, or if negative, minus the
+/// count in millions.
+inline double mumps_count(MUMPS_INT value) { return value >= 0 ? value : -1e6 * value; }
+
 /// Out-of-core factors (ICNTL(22) = 1) when `directory` is not empty: MUMPS writes the factors
 /// to files there (named biphasic_mumps*, deleted when the instance ends) as it computes them
 /// and reads them back at each solve, keeping in memory only the fronts it is working on. The
@@ -58,8 +62,7 @@ void throw_if_factor_files_failed(const Struc& id) {
 /// (mesh 1's files came to 3 % above the estimate).
 template <class Struc>
 double factor_file_bytes(const Struc& id, std::size_t bytes_per_entry) {
-  const double entries = id.info[2] >= 0 ? id.info[2] : -1e6 * id.info[2];
-  return 1.2 * entries * static_cast<double>(bytes_per_entry);
+  return 1.2 * mumps_count(id.info[2]) * static_cast<double>(bytes_per_entry);
 }
 
 /// Throws unless `folder` has `bytes` free for this user. Checked after the analysis, before
@@ -109,9 +112,7 @@ bool mumps_factorise(Struc& id, Call call, double nnz, LinearSolverStats& stats)
   ++stats.factorizations;
   throw_if_factor_files_failed(id);
   if (id.infog[0] < 0) return false;
-  // INFOG(29): entries in the factors (negative: millions).
-  const double entries = id.infog[28] >= 0 ? id.infog[28] : -1e6 * id.infog[28];
-  stats.fill = entries / nnz;
+  stats.fill = mumps_count(id.infog[28]) / nnz;  // INFOG(29): entries in the factors
   return true;
 }
 

@@ -254,8 +254,7 @@ LinearSolverPtr DistributedSystem::new_linear_solver(const LinearSolverConfig& c
                                                      const SaddlePointStructure* saddle) const {
   if (config.type == LinearSolverType::Mumps)
     return make_distributed_mumps_solver(assembly_.comm(), config.precision, assembly_.fill_order(),
-                                         ctx, stats,
-                                         config.out_of_core ? config.out_of_core_directory : "");
+                                         ctx, stats, config.factor_folder());
   if (config.type == LinearSolverType::Iterative) {
     FieldSplitLayout layout;
     layout.owned = size();

@@ -45,6 +45,9 @@ struct LinearSolverConfig {
   /// Where the out-of-core factors go; the case file sets it ($TMPDIR, else /tmp, by default).
   std::string out_of_core_directory;
   KrylovConfig krylov;
+
+  /// The folder MUMPS is to write its factors to: empty when they stay in memory.
+  std::string factor_folder() const { return out_of_core ? out_of_core_directory : std::string(); }
 };
 
 }  // namespace biphasic
